@@ -1,0 +1,28 @@
+#pragma once
+// What the decoder hands on: one entry per NC program line that commands
+// something (KRN-1). Positions are absolute, in machine axis order, mm.
+#include <cstdint>
+#include <vector>
+
+namespace hil::cnc {
+
+enum class MotionType { rapid, linear, arc_cw, arc_ccw };  // G00 G01 G02 G03
+
+struct Motion {
+  MotionType type = MotionType::linear;
+  std::vector<double> start;  // mm, per machine axis
+  std::vector<double> end;    // mm, per machine axis
+  double center_x = 0;        // mm, absolute arc centre (G02/G03, XY plane)
+  double center_y = 0;
+  double feed = 0;            // mm/s (programmed F is mm/min); 0 for G00
+};
+
+struct Block {
+  int64_t nc_line = 0;   // 1-based line of the NC program
+  int64_t block_nr = 0;  // N number, 0 if the line has none
+  bool has_motion = false;
+  Motion motion;
+  bool program_end = false;  // M30
+};
+
+}  // namespace hil::cnc

@@ -1,0 +1,231 @@
+#include "decoder.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace hil::cnc {
+namespace {
+
+struct Word {
+  char letter;
+  double value;
+  std::string text;  // as written, for messages
+};
+
+// Thrown inside decoding of one line; turned into the Event of that line.
+struct LineError {
+  std::string message;
+};
+
+std::string strip_comments(const std::string& line) {
+  std::string out;
+  bool in_paren = false;
+  for (char c : line) {
+    if (in_paren) {
+      if (c == ')') in_paren = false;
+      continue;
+    }
+    if (c == ';') break;
+    if (c == '(') {
+      in_paren = true;
+      continue;
+    }
+    out += c;
+  }
+  if (in_paren) throw LineError{"comment '(' is not closed on this line"};
+  return out;
+}
+
+std::vector<Word> split_words(const std::string& code) {
+  std::vector<Word> words;
+  size_t i = 0;
+  while (i < code.size()) {
+    const unsigned char c = static_cast<unsigned char>(code[i]);
+    if (std::isspace(c)) {
+      ++i;
+      continue;
+    }
+    if (c == '#' || c == '$') {
+      const size_t end = code.find_first_of(" \t[", i);
+      throw LineError{"command '" + code.substr(i, end - i) + "' is not supported yet"};
+    }
+    if (!std::isalpha(c)) throw LineError{std::string("unexpected character '") + code[i] + "'"};
+    const char letter = static_cast<char>(std::toupper(c));
+    size_t j = i + 1;
+    while (j < code.size() && (code[j] == ' ' || code[j] == '\t')) ++j;
+    const size_t number_start = j;
+    if (j < code.size() && (code[j] == '+' || code[j] == '-')) ++j;
+    bool digits = false;
+    while (j < code.size() && (std::isdigit(static_cast<unsigned char>(code[j])) || code[j] == '.')) {
+      digits = digits || code[j] != '.';
+      ++j;
+    }
+    const std::string number = code.substr(number_start, j - number_start);
+    if (!digits) throw LineError{std::string("address '") + letter + "' needs a number"};
+    char* parse_end = nullptr;
+    const double value = std::strtod(number.c_str(), &parse_end);
+    if (parse_end != number.c_str() + number.size() || !std::isfinite(value))
+      throw LineError{std::string("malformed number '") + number + "' after '" + letter + "'"};
+    words.push_back({letter, value, std::string(1, letter) + number});
+    i = j;
+  }
+  return words;
+}
+
+int integer_code(const Word& w) {
+  if (w.value != std::floor(w.value) || w.value < 0)
+    throw LineError{"'" + w.text + "' needs a whole non-negative number"};
+  return static_cast<int>(w.value);
+}
+
+struct ModalState {
+  MotionType motion = MotionType::linear;
+  bool absolute = true;   // G90
+  double feed = 0;        // mm/s
+};
+
+class LineDecoder {
+ public:
+  LineDecoder(const MachineConfig& machine, std::vector<double> position)
+      : machine_(machine), position_(std::move(position)) {}
+
+  // Returns false once M30 ended the program.
+  bool decode(const std::string& raw, int64_t line_nr, std::vector<Block>& out) {
+    std::string code = strip_comments(raw);
+    const size_t first = code.find_first_not_of(" \t\r");
+    if (first == std::string::npos) return true;
+    if (code[first] == '%') return true;  // program name
+    const std::vector<Word> words = split_words(code);
+
+    Block block;
+    block.nc_line = line_nr;
+    std::vector<std::optional<double>> axis_words(machine_.axes.size());
+    std::optional<double> i_word, j_word;
+    std::optional<MotionType> motion;
+    bool seen_motion_word = false;
+
+    for (size_t k = 0; k < words.size(); ++k) {
+      const Word& w = words[k];
+      switch (w.letter) {
+        case 'N':
+          if (k != 0) throw LineError{"'" + w.text + "' must be the first word of the block"};
+          block.block_nr = integer_code(w);
+          break;
+        case 'G': {
+          const int g = integer_code(w);
+          if (g <= 3) {
+            if (seen_motion_word) throw LineError{"two motion G codes in one block"};
+            seen_motion_word = true;
+            motion = static_cast<MotionType>(g);
+          } else if (g == 90) {
+            modal_.absolute = true;
+          } else if (g == 91) {
+            modal_.absolute = false;
+          } else {
+            throw LineError{"G code '" + w.text + "' is not supported yet"};
+          }
+          break;
+        }
+        case 'F':
+          if (!(w.value > 0)) throw LineError{"feed '" + w.text + "' must be > 0"};
+          modal_.feed = w.value / 60.0;
+          break;
+        case 'M':
+          if (integer_code(w) != 30) throw LineError{"M function '" + w.text + "' is not supported yet"};
+          block.program_end = true;
+          break;
+        case 'I': i_word = w.value; break;
+        case 'J': j_word = w.value; break;
+        default: {
+          const int axis = machine_.axis_index(std::string(1, w.letter));
+          if (axis < 0) throw LineError{"'" + w.text + "': " + w.letter + " is not an axis of this machine"};
+          if (axis_words[axis]) throw LineError{std::string("axis ") + w.letter + " programmed twice"};
+          axis_words[axis] = w.value;
+        }
+      }
+    }
+    if (motion) modal_.motion = *motion;
+
+    bool moves = false;
+    std::vector<double> target = position_;
+    for (size_t a = 0; a < axis_words.size(); ++a) {
+      if (!axis_words[a]) continue;
+      target[a] = modal_.absolute ? *axis_words[a] : position_[a] + *axis_words[a];
+      moves = true;
+    }
+    const bool is_arc = modal_.motion == MotionType::arc_cw || modal_.motion == MotionType::arc_ccw;
+    if ((i_word || j_word) && !is_arc) throw LineError{"I/J are only allowed with G02/G03"};
+    if (is_arc && (i_word || j_word)) moves = true;  // full circle: end = start
+
+    if (moves) {
+      block.has_motion = true;
+      Motion& m = block.motion;
+      m.type = modal_.motion;
+      m.start = position_;
+      m.end = target;
+      if (m.type != MotionType::rapid) {
+        if (!(modal_.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
+        m.feed = modal_.feed;
+      }
+      if (is_arc) set_arc_centre(m, i_word, j_word);
+      position_ = target;
+    }
+    if (block.has_motion || block.program_end) out.push_back(block);
+    return !block.program_end;
+  }
+
+ private:
+  void set_arc_centre(Motion& m, std::optional<double> i, std::optional<double> j) {
+    const int x = machine_.axis_index("X"), y = machine_.axis_index("Y");
+    if (x < 0 || y < 0) throw LineError{"G02/G03 need axes X and Y (plane G17)"};
+    if (!i && !j) throw LineError{"G02/G03 need the centre I/J (R is not supported yet)"};
+    m.center_x = m.start[x] + i.value_or(0);
+    m.center_y = m.start[y] + j.value_or(0);
+    const double r_start = std::hypot(m.start[x] - m.center_x, m.start[y] - m.center_y);
+    const double r_end = std::hypot(m.end[x] - m.center_x, m.end[y] - m.center_y);
+    if (r_start < 1e-6) throw LineError{"arc radius is zero"};
+    if (std::abs(r_start - r_end) > 1e-3 + 1e-6 * r_start) {
+      std::ostringstream msg;
+      msg << "arc end point does not lie on the circle (start radius " << r_start
+          << " mm, end radius " << r_end << " mm)";
+      throw LineError{msg.str()};
+    }
+  }
+
+  const MachineConfig& machine_;
+  std::vector<double> position_;
+  ModalState modal_;
+};
+
+}  // namespace
+
+DecodedProgram decode_program(const std::string& text, const MachineConfig& machine,
+                              const std::vector<double>& start) {
+  DecodedProgram program;
+  LineDecoder decoder(machine, start);
+  std::istringstream in(text);
+  std::string line;
+  int64_t line_nr = 0;
+  while (std::getline(in, line)) {
+    ++line_nr;
+    try {
+      if (!decoder.decode(line, line_nr, program.blocks)) break;
+    } catch (const LineError& e) {
+      Event error;
+      error.severity = Severity::error;
+      error.nc_line = line_nr;
+      // The N number if the line starts with one, for the message.
+      const size_t n = line.find_first_not_of(" \t");
+      if (n != std::string::npos && (line[n] == 'N' || line[n] == 'n'))
+        error.block_nr = std::atoll(line.c_str() + n + 1);
+      error.message = e.message + " in '" + line + "'";
+      program.error = error;
+      break;
+    }
+  }
+  return program;
+}
+
+}  // namespace hil::cnc

@@ -1,0 +1,26 @@
+#pragma once
+// NC text -> blocks, for the dialect subset of KRN-1 implemented so far:
+// N, G00 G01 G02 G03 (I J centre, incremental to the start point), G90 G91,
+// F (mm/min), M30, `;` and `( )` comments, `%name`. Anything else is an
+// error with its line number; the blocks before it are still returned, so
+// the channel can run exactly what was decoded correctly.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "block.hpp"
+#include "event.hpp"
+#include "machine_config.hpp"
+
+namespace hil::cnc {
+
+struct DecodedProgram {
+  std::vector<Block> blocks;
+  std::optional<Event> error;  // the first error; decoding stopped there
+};
+
+// `start` are the axis positions at program start (mm, machine axis order).
+DecodedProgram decode_program(const std::string& text, const MachineConfig& machine,
+                              const std::vector<double>& start);
+
+}  // namespace hil::cnc

@@ -1,0 +1,222 @@
+// The `cnc` node (RIG-1): the clock master. Each cycle it runs the channel,
+// publishes setpoints and the HLI state, and in lock-step waits for every
+// axis and the PLC to answer that cycle before the next (RIG-6).
+#include <hil/axis_setpoint_t.hpp>
+#include <hil/axis_state_t.hpp>
+#include <hil/participant_t.hpp>
+#include <hil/run_manifest_t.hpp>
+#include <lcm/lcm-cpp.hpp>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+#include <set>
+
+#include "channel.hpp"
+#include "channels.hpp"
+#include "messages.hpp"
+#include "node_options.hpp"
+#include "participant.hpp"
+#include "scenario.hpp"
+
+namespace {
+
+using namespace hil;
+using clock_type = std::chrono::steady_clock;
+
+// What the participants answered so far.
+struct Answers {
+  std::vector<int64_t> axis_cycle;
+  int64_t plc_cycle = -1;
+  HliControl control;
+  std::set<std::string> ready;
+};
+
+class CncNode {
+ public:
+  CncNode(const Scenario& scenario, const std::string& url, std::vector<std::string> participants,
+          std::chrono::milliseconds answer_timeout)
+      : scenario_(scenario), machine_(scenario.machine), lcm_(url), participants_(std::move(participants)),
+        answer_timeout_(answer_timeout), channel_(scenario.machine, scenario.nc_program) {
+    lcm_support::require_good(lcm_, url);
+    answers_.axis_cycle.assign(machine_.axes.size(), -1);
+    for (size_t i = 0; i < machine_.axes.size(); ++i) {
+      auto* sub = lcm_.subscribeFunction(
+          channels::axis_state(machine_.axes[i].name),
+          +[](const lcm::ReceiveBuffer*, const std::string& channel, const hil::axis_state_t* m, CncNode* self) {
+            self->on_axis_state(channel, *m);
+          },
+          this);
+      sub->setQueueCapacity(10000);
+    }
+    lcm_.subscribeFunction(
+           channels::hli_control,
+           +[](const lcm::ReceiveBuffer*, const std::string&, const hil::hli_control_t* m, CncNode* self) {
+             if (m->cycle > self->answers_.plc_cycle) {
+               self->answers_.plc_cycle = m->cycle;
+               self->answers_.control = lcm_support::from_message(*m);
+             }
+           },
+           this)
+        ->setQueueCapacity(10000);
+    lcm_.subscribeFunction(
+        channels::participant,
+        +[](const lcm::ReceiveBuffer*, const std::string&, const hil::participant_t* m, CncNode* self) {
+          if (m->phase == hil::participant_t::PHASE_READY) self->answers_.ready.insert(m->name);
+        },
+        this);
+  }
+
+  int run() {
+    if (!wait_for_participants()) return 3;
+    publish_manifest();
+    const double dt = machine_.cycle_time_s();
+    const int64_t settle_cycles = std::llround(scenario_.settle_time_s / dt);
+    const int64_t max_cycles = std::llround(scenario_.max_time_s / dt);
+    int64_t finished_at = -1;
+    int64_t k = 0;
+    int status = 0;
+    HliControl control;  // the PLC's answer to the previous cycle
+    for (;; ++k) {
+      channel_.step(k, control);
+      for (const Event& e : channel_.take_events()) publish_event(e, k);
+      publish_cycle(k);
+      if (!wait_for_answers(k)) {
+        status = 3;
+        break;
+      }
+      control = answers_.control;
+      if (channel_.finished() && finished_at < 0) finished_at = k;
+      if (finished_at >= 0 && k - finished_at >= settle_cycles) break;
+      if (k >= max_cycles) {
+        Event e;
+        e.message = "run exceeded run.max_time_s = " + std::to_string(scenario_.max_time_s) +
+                    " s of simulated time; stopped";
+        publish_event(e, k);
+        break;
+      }
+    }
+    hil::participant_t end;
+    end.utime = k * machine_.cycle_time_us;
+    end.cycle = k;
+    end.name = "cnc";
+    end.phase = hil::participant_t::PHASE_RUN_END;
+    lcm_.publish(channels::participant, &end);
+    spdlog::info("run ended after cycle {} ({:.3f} s simulated), channel {}", k, k * dt,
+                 to_string(channel_.hli().channel_state));
+    return status;
+  }
+
+ private:
+  bool wait_for_participants() {
+    const auto give_up = clock_type::now() + std::chrono::seconds(20);
+    auto all_ready = [&] {
+      for (const auto& name : participants_)
+        if (!answers_.ready.count(name)) return false;
+      return true;
+    };
+    while (!all_ready()) {
+      if (clock_type::now() > give_up) {
+        std::string missing;
+        for (const auto& name : participants_)
+          if (!answers_.ready.count(name)) missing += " '" + name + "'";
+        spdlog::error("participants not ready after 20 s:{}", missing);
+        return false;
+      }
+      lcm_.handleTimeout(50);
+    }
+    return true;
+  }
+
+  void publish_manifest() {
+    hil::run_manifest_t m;
+    m.utime = 0;
+    m.cycle = 0;
+    m.rig_version = HIL_VERSION;
+    m.scenario_name = scenario_.name;
+    m.cycle_us = machine_.cycle_time_us;
+    m.scenario_yaml = to_yaml(scenario_);
+    m.nc_program = scenario_.nc_program;
+    lcm_.publish(channels::manifest, &m);
+  }
+
+  void publish_event(const Event& e, int64_t k) {
+    spdlog::log(e.severity == Severity::error ? spdlog::level::err : spdlog::level::warn, "{}", describe(e));
+    const hil::event_t m = lcm_support::to_message(e, k, k * machine_.cycle_time_us, "cnc");
+    lcm_.publish(channels::event, &m);
+  }
+
+  void publish_cycle(int64_t k) {
+    const int64_t utime = k * machine_.cycle_time_us;
+    const auto& setpoints = channel_.setpoints();
+    for (size_t i = 0; i < setpoints.size(); ++i) {
+      hil::axis_setpoint_t m;
+      m.utime = utime;
+      m.cycle = k;
+      m.axis = machine_.axes[i].name;
+      m.position = setpoints[i].position;
+      m.velocity = setpoints[i].velocity;
+      m.acceleration = setpoints[i].acceleration;
+      lcm_.publish(channels::axis_command(m.axis), &m);
+    }
+    const hil::hli_state_t hli = lcm_support::to_message(channel_.hli(), utime);
+    lcm_.publish(channels::hli_state, &hli);
+  }
+
+  bool wait_for_answers(int64_t k) {
+    const auto give_up = clock_type::now() + answer_timeout_;
+    for (;;) {
+      bool complete = answers_.plc_cycle >= k;
+      for (int64_t c : answers_.axis_cycle) complete = complete && c >= k;
+      if (complete) return true;
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - clock_type::now());
+      if (left.count() <= 0 || lcm_.handleTimeout(static_cast<int>(left.count()) + 1) < 0) break;
+    }
+    std::string silent = answers_.plc_cycle < k ? " plc_sim" : "";
+    for (size_t i = 0; i < answers_.axis_cycle.size(); ++i)
+      if (answers_.axis_cycle[i] < k) silent += " axis_sim " + machine_.axes[i].name;
+    Event e;
+    e.message = "lock-step broken: no answer to cycle " + std::to_string(k) + " within " +
+                std::to_string(answer_timeout_.count()) + " ms from" + silent;
+    publish_event(e, k);
+    return false;
+  }
+
+  void on_axis_state(const std::string& channel, const hil::axis_state_t& m) {
+    const int axis = machine_.axis_index(m.axis);
+    if (axis < 0 || channels::axis_state(m.axis) != channel) return;
+    answers_.axis_cycle[axis] = std::max(answers_.axis_cycle[axis], m.cycle);
+  }
+
+  Scenario scenario_;
+  MachineConfig machine_;
+  lcm::LCM lcm_;
+  std::vector<std::string> participants_;
+  std::chrono::milliseconds answer_timeout_;
+  cnc::Channel channel_;
+  Answers answers_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"cnc: the CNC node of the HIL rig, clock master in lock-step"};
+  hil::lcm_support::NodeOptions options;
+  hil::lcm_support::add_node_options(app, options);
+  std::vector<std::string> participants;
+  app.add_option("--participants", participants,
+                 "nodes to wait for before cycle 0 (default: every axis_sim, plc_sim, logger)");
+  int answer_timeout_ms = 5000;
+  app.add_option("--answer-timeout-ms", answer_timeout_ms, "lock-step watchdog per cycle")->check(CLI::PositiveNumber);
+  CLI11_PARSE(app, argc, argv);
+  return hil::lcm_support::guarded_main("cnc", [&] {
+    const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
+    if (participants.empty()) {
+      for (const auto& axis : scenario.machine.axes) participants.push_back("axis_sim " + axis.name);
+      participants.push_back("plc_sim");
+      participants.push_back("logger");
+    }
+    CncNode node(scenario, options.url, participants, std::chrono::milliseconds(answer_timeout_ms));
+    return node.run();
+  });
+}

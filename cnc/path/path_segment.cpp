@@ -1,0 +1,118 @@
+#include "path_segment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hil::cnc {
+namespace {
+constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr double two_pi = 2 * M_PI;
+}  // namespace
+
+PathSegment::PathSegment(const Motion& m, const MachineConfig& machine)
+    : start_(m.start), end_(m.end), unit_(m.start.size(), 0.0) {
+  arc_ = m.type == MotionType::arc_cw || m.type == MotionType::arc_ccw;
+  if (arc_) set_arc_limits(m, machine);
+  else set_line_limits(m, machine);
+}
+
+void PathSegment::set_line_limits(const Motion& m, const MachineConfig& machine) {
+  double sum = 0;
+  for (size_t i = 0; i < start_.size(); ++i) sum += (end_[i] - start_[i]) * (end_[i] - start_[i]);
+  length_ = std::sqrt(sum);
+  limits_ = {m.type == MotionType::rapid ? inf : m.feed, inf, inf};
+  if (length_ == 0) return;
+  for (size_t i = 0; i < start_.size(); ++i) {
+    unit_[i] = (end_[i] - start_[i]) / length_;
+    const double share = std::abs(unit_[i]);
+    if (share == 0) continue;
+    const AxisConfig& axis = machine.axes[i];
+    limits_.v = std::min(limits_.v, (m.type == MotionType::rapid ? axis.v_rapid : axis.v_max) / share);
+    limits_.a = std::min(limits_.a, axis.a_max / share);
+    limits_.j = std::min(limits_.j, axis.j_max / share);
+  }
+}
+
+// On the circle an axis sees c*a_t + c^2 v^2/R (acceleration) and
+// c*j_t + 3 c^2 v a_t/R + c^3 v^3/R^2 (jerk), c the planar share of ds.
+// Each term gets a fixed part of the axis limit: the centripetal terms half
+// the acceleration and a third of the jerk, which bounds v, a_t and j_t.
+void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) {
+  ix_ = machine.axis_index("X");
+  iy_ = machine.axis_index("Y");
+  cx_ = m.center_x;
+  cy_ = m.center_y;
+  radius_ = std::hypot(m.start[ix_] - cx_, m.start[iy_] - cy_);
+  radius_end_ = std::hypot(m.end[ix_] - cx_, m.end[iy_] - cy_);
+  angle0_ = std::atan2(m.start[iy_] - cy_, m.start[ix_] - cx_);
+  direction_ = m.type == MotionType::arc_ccw ? 1 : -1;
+  const double angle_end = std::atan2(m.end[iy_] - cy_, m.end[ix_] - cx_);
+  double sweep = direction_ * (angle_end - angle0_);  // > 0 along the direction
+  sweep = std::fmod(sweep + 2 * two_pi, two_pi);
+  if (sweep < 1e-9) sweep = two_pi;  // end = start: full circle
+  const double arc_length = radius_ * sweep;
+  double sum = arc_length * arc_length;
+  for (size_t i = 0; i < start_.size(); ++i)
+    if (static_cast<int>(i) != ix_ && static_cast<int>(i) != iy_)
+      sum += (end_[i] - start_[i]) * (end_[i] - start_[i]);
+  length_ = std::sqrt(sum);
+  planar_ = arc_length / length_;
+
+  const AxisConfig& x = machine.axes[ix_];
+  const AxisConfig& y = machine.axes[iy_];
+  const double c = planar_, r = radius_;
+  const double a_xy = std::min(x.a_max, y.a_max), j_xy = std::min(x.j_max, y.j_max);
+  double v = std::min({m.feed, std::min(x.v_max, y.v_max) / c, std::sqrt(a_xy * r / 2) / c,
+                       std::cbrt(j_xy * r * r / 3) / c});
+  double a = a_xy / (2 * c);
+  double j = j_xy / (3 * c);
+  for (size_t i = 0; i < start_.size(); ++i) {
+    if (static_cast<int>(i) == ix_ || static_cast<int>(i) == iy_) continue;
+    unit_[i] = (end_[i] - start_[i]) / length_;
+    const double share = std::abs(unit_[i]);
+    if (share == 0) continue;
+    v = std::min(v, machine.axes[i].v_max / share);
+    a = std::min(a, machine.axes[i].a_max / share);
+    j = std::min(j, machine.axes[i].j_max / share);
+  }
+  a = std::min(a, j_xy * r / (9 * c * c * v));
+  limits_ = {v, a, j};
+}
+
+std::vector<double> PathSegment::position(double s) const {
+  std::vector<double> p(start_.size());
+  for (size_t i = 0; i < p.size(); ++i) p[i] = start_[i] + unit_[i] * s;
+  if (arc_) {
+    // The decoder accepts end radii a little off the start radius: blend
+    // them along the arc so the path ends exactly where it was programmed.
+    const double angle = angle_at(s);
+    const double r = radius_ + (radius_end_ - radius_) * s / length_;
+    p[ix_] = cx_ + r * std::cos(angle);
+    p[iy_] = cy_ + r * std::sin(angle);
+  }
+  return p;
+}
+
+std::vector<double> PathSegment::tangent(double s) const {
+  std::vector<double> t = unit_;
+  if (arc_) {
+    const double angle = angle_at(s);
+    t[ix_] = -direction_ * planar_ * std::sin(angle);
+    t[iy_] = direction_ * planar_ * std::cos(angle);
+  }
+  return t;
+}
+
+std::vector<double> PathSegment::curvature(double s) const {
+  std::vector<double> k(start_.size(), 0.0);
+  if (arc_) {
+    const double angle = angle_at(s);
+    const double scale = planar_ * planar_ / radius_;
+    k[ix_] = -scale * std::cos(angle);
+    k[iy_] = -scale * std::sin(angle);
+  }
+  return k;
+}
+
+}  // namespace hil::cnc

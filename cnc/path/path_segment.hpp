@@ -1,0 +1,41 @@
+#pragma once
+// Geometry of one motion block (line or helical arc in the XY plane) over
+// its path length s, and the path limits (velocity, acceleration, jerk)
+// under which every axis stays within its own limits (KRN-3).
+#include <vector>
+
+#include "block.hpp"
+#include "machine_config.hpp"
+#include "rest_to_rest.hpp"
+
+namespace hil::cnc {
+
+class PathSegment {
+ public:
+  PathSegment(const Motion& motion, const MachineConfig& machine);
+
+  double length() const { return length_; }
+  const Limits& limits() const { return limits_; }
+  const std::vector<double>& end() const { return end_; }
+
+  // Axis positions at path length s; first and second derivatives by s.
+  std::vector<double> position(double s) const;
+  std::vector<double> tangent(double s) const;
+  std::vector<double> curvature(double s) const;
+
+ private:
+  double angle_at(double s) const { return angle0_ + direction_ * planar_ * s / radius_; }
+  void set_line_limits(const Motion& motion, const MachineConfig& machine);
+  void set_arc_limits(const Motion& motion, const MachineConfig& machine);
+
+  bool arc_ = false;
+  std::vector<double> start_, end_, unit_;  // unit_: d(axis)/ds of the linear axes
+  int ix_ = -1, iy_ = -1;                   // arc plane axes
+  double cx_ = 0, cy_ = 0, radius_ = 0, radius_end_ = 0, angle0_ = 0;
+  double direction_ = 1;  // +1 counter-clockwise (G03), -1 clockwise (G02)
+  double planar_ = 0;     // share of the path length on the circle
+  double length_ = 0;
+  Limits limits_;
+};
+
+}  // namespace hil::cnc

@@ -1,0 +1,56 @@
+#pragma once
+// The HLI (PLC <-> CNC interface, KRN-4) as plain values. The CNC's channel
+// library fills HliState, the PLC simulator writes HliControl; the nodes
+// translate both to and from the LCM types hli_state_t / hli_control_t.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hil {
+
+enum class ChannelState : int8_t { ready = 0, active = 1, program_end = 2, error = 3 };
+
+const char* to_string(ChannelState state);
+// "READY", "ACTIVE", "PROGRAM_END", "ERROR" (case-insensitive); false if unknown.
+bool parse_channel_state(const std::string& text, ChannelState& state);
+
+// HLI_SC_* bits of stop_conditions_r (TF5200_insert_stop_cmd.txt, table of
+// stop conditions); only the ones the channel sets so far.
+namespace stop_condition {
+constexpr int32_t ipo_input_empty = 0x1000;   // HLI_SC_IPO_INPUT_EMPTY
+constexpr int32_t channel_error = 0x00010000;  // HLI_SC_CHANNEL_ERROR
+}  // namespace stop_condition
+
+struct ControlUnitBool {
+  bool command_w = false;
+  bool enable_w = false;
+};
+
+struct ControlUnitState {
+  bool request_r = false;
+  bool state_r = false;
+};
+
+struct HliControl {
+  int64_t cycle = -1;  // the HLI_STATE cycle this answers
+  ControlUnitBool program_start;
+};
+
+struct HliState {
+  int64_t cycle = 0;
+  ChannelState channel_state = ChannelState::ready;
+  int64_t block_nr_r = 0;
+  int64_t block_count_r = 0;
+  int32_t stop_conditions_r = 0;
+  double dist_prog_start = 0;     // 0.1 um
+  double path_velocity = 0;       // mm/s
+  int32_t last_error_id = 0;
+  std::vector<std::string> axis_name;
+  std::vector<int64_t> axis_position_r;  // 0.1 um
+  ControlUnitState program_start;
+};
+
+// HLI length unit: 0.1 um.
+constexpr double hli_units_per_mm = 10000.0;
+
+}  // namespace hil

@@ -1,0 +1,84 @@
+#include "machine_config.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+
+#include "config_error.hpp"
+
+namespace hil {
+namespace {
+
+double positive(const YAML::Node& node, const std::string& key, const std::string& where) {
+  if (!node[key]) throw ConfigError(where + ": '" + key + "' is missing");
+  double value = 0;
+  try {
+    value = node[key].as<double>();
+  } catch (const YAML::Exception&) {
+    throw ConfigError(where + ": '" + key + "' is not a number");
+  }
+  if (!(value > 0) || !std::isfinite(value))
+    throw ConfigError(where + ": '" + key + "' must be > 0");
+  return value;
+}
+
+AxisConfig parse_axis(const YAML::Node& node, size_t index) {
+  AxisConfig axis;
+  const std::string where = "axes[" + std::to_string(index) + "]";
+  if (!node["name"]) throw ConfigError(where + ": 'name' is missing");
+  axis.name = node["name"].as<std::string>();
+  const std::string at = "axis " + axis.name;
+  if (axis.name.empty() || axis.name.find_first_not_of("ABCUVWXYZ") != std::string::npos ||
+      axis.name.size() != 1)
+    throw ConfigError(at + ": name must be one of the letters A B C U V W X Y Z");
+  axis.v_max = positive(node, "v_max", at);
+  axis.v_rapid = node["v_rapid"] ? positive(node, "v_rapid", at) : axis.v_max;
+  if (axis.v_rapid > axis.v_max) throw ConfigError(at + ": 'v_rapid' exceeds 'v_max'");
+  axis.a_max = positive(node, "a_max", at);
+  axis.j_max = positive(node, "j_max", at);
+  axis.kv = positive(node, "kv", at);
+  axis.velocity_lag_s = positive(node, "velocity_lag_s", at);
+  if (node["dyn_monitoring_a_warn"]) axis.dyn_monitoring_a_warn = node["dyn_monitoring_a_warn"].as<int32_t>();
+  if (node["dyn_monitoring_a_err"]) axis.dyn_monitoring_a_err = node["dyn_monitoring_a_err"].as<int32_t>();
+  // Values below 1000 would put the monitoring limit below a_max, so planned
+  // motion would trip it: almost surely the value was meant as a percentage
+  // excess. Refuse rather than guess (docs/UNITS.md).
+  if (axis.dyn_monitoring_a_warn < 1000)
+    throw ConfigError(at + ": P-AXIS-00441 dyn_monitoring_a_warn must be >= 1000 (limit = a_max * value / 1000)");
+  if (axis.dyn_monitoring_a_err < axis.dyn_monitoring_a_warn)
+    throw ConfigError(at + ": P-AXIS-00442 dyn_monitoring_a_err must be >= P-AXIS-00441 dyn_monitoring_a_warn");
+  if (node["following_error_max"]) axis.following_error_max = positive(node, "following_error_max", at);
+  return axis;
+}
+
+}  // namespace
+
+int MachineConfig::axis_index(const std::string& axis_name) const {
+  for (size_t i = 0; i < axes.size(); ++i)
+    if (axes[i].name == axis_name) return static_cast<int>(i);
+  return -1;
+}
+
+MachineConfig parse_machine_config(const YAML::Node& node) {
+  if (!node.IsMap()) throw ConfigError("machine: expected a mapping");
+  MachineConfig config;
+  try {
+    config.name = node["name"] ? node["name"].as<std::string>() : "machine";
+    if (node["cycle_time_us"]) config.cycle_time_us = node["cycle_time_us"].as<int32_t>();
+    if (config.cycle_time_us < 100 || config.cycle_time_us > 100000)
+      throw ConfigError("machine: cycle_time_us must be within 100 .. 100000");
+    const YAML::Node axes = node["axes"];
+    if (!axes || !axes.IsSequence() || axes.size() == 0)
+      throw ConfigError("machine: 'axes' must be a non-empty list");
+    for (size_t i = 0; i < axes.size(); ++i) {
+      config.axes.push_back(parse_axis(axes[i], i));
+      if (config.axis_index(config.axes.back().name) != static_cast<int>(i))
+        throw ConfigError("machine: axis " + config.axes.back().name + " is defined twice");
+    }
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(std::string("machine: ") + e.what());
+  }
+  return config;
+}
+
+}  // namespace hil

@@ -1,0 +1,85 @@
+#pragma once
+// A HIL scenario (RIG-5): machine configuration, NC program, PLC timeline and
+// expectations. Files are YAML; see docs/SCENARIOS.md for the format.
+#include <yaml-cpp/yaml.h>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "event.hpp"
+#include "hli.hpp"
+#include "machine_config.hpp"
+
+namespace hil {
+
+// A conjunction of predicates on the HLI state; a trigger fires the first
+// cycle in which all of them hold.
+struct Condition {
+  std::optional<int64_t> cycle;               // cycle >= value
+  std::optional<double> time_s;               // cycle * cycle time >= value
+  std::optional<int64_t> block_nr_r;          // == value
+  std::optional<int64_t> block_count_r;       // == value
+  std::optional<double> dist_prog_start_mm;   // covered distance >= value
+  std::optional<ChannelState> channel_state;  // == value
+
+  bool holds(const HliState& state, double cycle_time_s) const;
+  std::string describe() const;
+};
+
+// One write to a control unit field, e.g. "program_start.command_w": true.
+struct ControlWrite {
+  std::string field;
+  bool value = false;
+};
+
+struct TimelineStep {
+  Condition when;
+  std::vector<ControlWrite> set;
+};
+
+// Checks on the HLI state at the moment `when` first holds.
+struct Expectation {
+  Condition when;
+  std::optional<ChannelState> channel_state;
+  std::optional<int64_t> block_nr_r;
+  std::optional<int64_t> block_count_r;
+  std::optional<double> dist_prog_start_mm;
+  std::map<std::string, double> axis_position_mm;
+  double tolerance_mm = 0.001;
+};
+
+// An event that must (or, with count 0, must not) appear during the run.
+struct EventExpectation {
+  int32_t id = 0;
+  Severity severity = Severity::error;
+  int count_min = 1;  // at least this many; 0 with `absent` means none allowed
+  bool absent = false;
+};
+
+struct Scenario {
+  std::string name;
+  std::string description;
+  std::vector<std::string> requirements;  // SPEC IDs the scenario exercises
+  MachineConfig machine;
+  std::string nc_program;
+  double max_time_s = 60;      // the CNC aborts the run after this much simulated time
+  double settle_time_s = 0.1;  // cycles run after program end, for drives and PLC
+  std::vector<TimelineStep> timeline;
+  std::vector<Expectation> expectations;
+  std::vector<EventExpectation> expected_events;
+  bool allow_errors = false;   // unexpected error events fail the run unless true
+
+  YAML::Node resolved;  // the whole scenario, machine and NC program inline
+};
+
+// Loads a scenario file; `machine:` and `nc_file:` may name files relative
+// to it. Throws ConfigError with the file and field.
+Scenario load_scenario_file(const std::string& path);
+// Parses a scenario whose machine and NC program are inline (as in a manifest).
+Scenario parse_scenario(const YAML::Node& root);
+std::string to_yaml(const Scenario& scenario);
+
+}  // namespace hil

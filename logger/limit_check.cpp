@@ -1,0 +1,78 @@
+#include "limit_check.hpp"
+
+#include <cmath>
+
+namespace hil::logger {
+
+LimitChecker::LimitChecker(const MachineConfig& machine)
+    : machine_(machine), setpoints_(machine.axes.size()), summary_(machine.axes.size()) {
+  for (size_t i = 0; i < machine.axes.size(); ++i) {
+    const AxisConfig& a = machine.axes[i];
+    AxisSummary& s = summary_[i];
+    s.axis = a.name;
+    s.v_max = a.v_max;
+    s.a_max = a.a_max;
+    s.j_max = a.j_max;
+    s.a_err_limit = a.accel_error_limit();
+    s.following_error_max = a.following_error_max;
+  }
+}
+
+void LimitChecker::check(std::vector<Violation>& out, double& max_seen, double value, double limit,
+                         int64_t cycle, const std::string& axis, const char* quantity) const {
+  const double magnitude = std::abs(value);
+  max_seen = std::max(max_seen, magnitude);
+  if (limit > 0 && magnitude > limit * (1 + limit_tolerance) + 1e-12)
+    out.push_back({cycle * machine_.cycle_time_s(), axis, quantity, value, limit});
+}
+
+void LimitChecker::add_setpoint(int axis, int64_t cycle, double position) {
+  setpoints_[axis].cycle.push_back(cycle);
+  setpoints_[axis].position.push_back(position);
+  ++summary_[axis].setpoints;
+}
+
+void LimitChecker::add_actual(int axis, int64_t cycle, double velocity, double acceleration,
+                              double following_error) {
+  AxisSummary& s = summary_[axis];
+  ++s.states;
+  s.act_v = std::max(s.act_v, std::abs(velocity));
+  check(actual_violations_, s.act_a, acceleration, s.a_err_limit, cycle, s.axis,
+        "actual acceleration (P-AXIS-00442 limit)");
+  check(actual_violations_, s.following_error, following_error, s.following_error_max, cycle, s.axis,
+        "following error");
+}
+
+CheckReport LimitChecker::finish() const {
+  CheckReport report;
+  report.violations = actual_violations_;
+  const double dt = machine_.cycle_time_s();
+  for (size_t i = 0; i < setpoints_.size(); ++i) {
+    const Trace& t = setpoints_[i];
+    AxisSummary& s = summary_[i];
+    // Differences only across consecutive cycles; a gap restarts them.
+    double v1 = 0, a1 = 0;
+    int run = 0;  // consecutive samples so far
+    for (size_t k = 0; k < t.position.size(); ++k) {
+      if (k == 0 || t.cycle[k] != t.cycle[k - 1] + 1) {
+        run = 1;
+        continue;
+      }
+      ++run;
+      const double v = (t.position[k] - t.position[k - 1]) / dt;
+      check(report.violations, s.cmd_v, v, s.v_max, t.cycle[k], s.axis, "commanded velocity");
+      if (run >= 3) {
+        const double a = (v - v1) / dt;
+        check(report.violations, s.cmd_a, a, s.a_max, t.cycle[k], s.axis, "commanded acceleration");
+        if (run >= 4) check(report.violations, s.cmd_j, (a - a1) / dt, s.j_max, t.cycle[k], s.axis,
+                            "commanded jerk");
+        a1 = a;
+      }
+      v1 = v;
+    }
+  }
+  report.axes = summary_;
+  return report;
+}
+
+}  // namespace hil::logger

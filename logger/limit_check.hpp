@@ -1,0 +1,64 @@
+#pragma once
+// Offline check of one run against every axis' limits (RIG-4). Commanded
+// velocity, acceleration and jerk are taken from differences of the
+// commanded positions: the k-th difference of a sampled motion is a
+// weighted mean of its k-th derivative, so it never exceeds the true
+// maximum, and the check does not trust what the CNC says of itself.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "machine_config.hpp"
+
+namespace hil::logger {
+
+struct Violation {
+  double time_s = 0;
+  std::string axis;
+  std::string quantity;  // e.g. "commanded acceleration"
+  double value = 0;
+  double limit = 0;
+};
+
+struct AxisSummary {
+  std::string axis;
+  double cmd_v = 0, cmd_a = 0, cmd_j = 0;  // max |.| of the commanded motion
+  double act_v = 0, act_a = 0;             // max |.| of the actual motion
+  double following_error = 0;              // max |.|
+  double v_max = 0, a_max = 0, j_max = 0, a_err_limit = 0, following_error_max = 0;
+  int64_t setpoints = 0, states = 0;       // samples seen
+};
+
+struct CheckReport {
+  std::vector<AxisSummary> axes;
+  std::vector<Violation> violations;
+  bool passed() const { return violations.empty(); }
+};
+
+class LimitChecker {
+ public:
+  explicit LimitChecker(const MachineConfig& machine);
+
+  // Samples of one axis in cycle order.
+  void add_setpoint(int axis, int64_t cycle, double position);
+  void add_actual(int axis, int64_t cycle, double velocity, double acceleration, double following_error);
+  CheckReport finish() const;
+
+ private:
+  struct Trace {
+    std::vector<int64_t> cycle;
+    std::vector<double> position;
+  };
+  void check(std::vector<Violation>& out, double& max_seen, double value, double limit, int64_t cycle,
+             const std::string& axis, const char* quantity) const;
+
+  MachineConfig machine_;
+  std::vector<Trace> setpoints_;
+  mutable std::vector<AxisSummary> summary_;
+  std::vector<Violation> actual_violations_;
+};
+
+// Relative slack for round-off in the limit comparisons.
+constexpr double limit_tolerance = 1e-6;
+
+}  // namespace hil::logger

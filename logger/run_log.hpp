@@ -1,0 +1,43 @@
+#pragma once
+// Reads a rig's LCM event log (RIG-4): the manifest that explains it, the
+// axis traces, the HLI states and the events, decoded.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "event.hpp"
+#include "limit_check.hpp"
+#include "scenario.hpp"
+
+namespace hil::logger {
+
+struct LoggedEvent {
+  int64_t cycle = 0;
+  std::string source;
+  Event event;
+};
+
+struct RunLog {
+  std::optional<Scenario> scenario;  // from HIL_MANIFEST
+  std::string rig_version;
+  std::vector<LoggedEvent> events;
+  std::map<std::string, int64_t> messages_per_channel;
+  int64_t last_cycle = -1;
+  bool run_end_seen = false;
+  int64_t undecodable = 0;  // messages that did not decode as their channel's type
+};
+
+// Reads `path`; feeds the axis traces into a LimitChecker built from the
+// manifest, if there is one. Throws std::runtime_error if the file cannot
+// be read as an LCM log.
+RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report = nullptr);
+
+// Compares two logs channel by channel, message by message, on the payload
+// bytes (all times in them are simulated, so equal runs give equal bytes).
+// Channels of the HIL_PARTICIPANT handshake are left out: who says "ready"
+// first is wall-clock order. Returns "" if identical, else the first difference.
+std::string compare_run_logs(const std::string& a, const std::string& b);
+
+}  // namespace hil::logger

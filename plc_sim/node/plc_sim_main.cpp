@@ -1,0 +1,97 @@
+// The `plc_sim` node (RIG-1, RIG-5): the PLC. Answers every HLI_STATE with
+// an HLI_CONTROL from the scenario's timeline, checks the expectations and
+// reports them at the end of the run.
+#include <hil/event_t.hpp>
+#include <hil/hli_control_t.hpp>
+#include <hil/hli_state_t.hpp>
+#include <lcm/lcm-cpp.hpp>
+#include <spdlog/spdlog.h>
+
+#include "channels.hpp"
+#include "messages.hpp"
+#include "node_options.hpp"
+#include "participant.hpp"
+#include "scenario.hpp"
+#include "scenario_engine.hpp"
+
+namespace {
+
+using namespace hil;
+const std::string source = "plc_sim";
+
+class PlcSimNode {
+ public:
+  PlcSimNode(const Scenario& scenario, lcm::LCM& lcm) : engine_(scenario), lcm_(lcm) {
+    lcm_.subscribeFunction(
+           channels::hli_state,
+           +[](const lcm::ReceiveBuffer*, const std::string&, const hil::hli_state_t* m, PlcSimNode* self) {
+             self->on_state(*m);
+           },
+           this)
+        ->setQueueCapacity(10000);
+    lcm_.subscribeFunction(
+           channels::event,
+           +[](const lcm::ReceiveBuffer*, const std::string&, const hil::event_t* m, PlcSimNode* self) {
+             if (m->source != source) self->engine_.observe(lcm_support::from_message(*m));
+           },
+           this)
+        ->setQueueCapacity(10000);
+  }
+
+  // Publishes one event per expectation; returns the number that failed.
+  int report(int64_t cycle) {
+    int failed = 0;
+    for (const plc::ExpectationResult& r : engine_.finish()) {
+      Event e;
+      e.severity = r.passed ? Severity::info : Severity::error;
+      e.message = std::string(r.passed ? "PASS " : "FAIL ") + r.what + ":" + r.detail;
+      failed += r.passed ? 0 : 1;
+      (r.passed ? spdlog::info("{}", e.message) : spdlog::error("{}", e.message));
+      const hil::event_t m = lcm_support::to_message(e, cycle, utime_, source);
+      lcm_.publish(channels::event, &m);
+    }
+    return failed;
+  }
+
+ private:
+  void on_state(const hil::hli_state_t& m) {
+    if (m.cycle <= last_cycle_) return;
+    last_cycle_ = m.cycle;
+    utime_ = m.utime;
+    const HliControl& control = engine_.cycle(lcm_support::from_message(m));
+    const hil::hli_control_t out = lcm_support::to_message(control, m.utime);
+    lcm_.publish(channels::hli_control, &out);
+  }
+
+  plc::ScenarioEngine engine_;
+  lcm::LCM& lcm_;
+  int64_t last_cycle_ = -1;
+  int64_t utime_ = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"plc_sim: simulated PLC of the HIL rig, runs the scenario timeline"};
+  hil::lcm_support::NodeOptions options;
+  hil::lcm_support::add_node_options(app, options);
+  CLI11_PARSE(app, argc, argv);
+  return hil::lcm_support::guarded_main(source, [&] {
+    const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
+    lcm::LCM lcm(options.url);
+    hil::lcm_support::require_good(lcm, options.url);
+    PlcSimNode node(scenario, lcm);
+    hil::lcm_support::Participant participant(lcm, source);
+    if (!participant.wait_for_start(std::chrono::seconds(30))) {
+      spdlog::error("the CNC did not start a run within 30 s");
+      return 2;
+    }
+    if (!participant.serve_until_end(std::chrono::seconds(10))) {
+      spdlog::error("no message for 10 s: the CNC is gone");
+      return 2;
+    }
+    const int failed = node.report(participant.end_cycle());
+    participant.announce_end(participant.end_cycle());
+    return failed == 0 ? 0 : 1;
+  });
+}

@@ -1,0 +1,107 @@
+#include "scenario_engine.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "config_error.hpp"
+#include "hli_client.hpp"
+
+namespace hil::plc {
+
+ScenarioEngine::ScenarioEngine(const Scenario& scenario)
+    : timeline_(scenario.timeline), fired_(scenario.timeline.size(), false),
+      expected_events_(scenario.expected_events), allow_errors_(scenario.allow_errors),
+      cycle_time_s_(scenario.machine.cycle_time_s()) {
+  for (size_t i = 0; i < timeline_.size(); ++i)
+    for (const ControlWrite& write : timeline_[i].set)
+      if (!control_field(control_, write.field)) {
+        std::string known;
+        for (const auto& name : control_field_names()) known += " " + name;
+        throw ConfigError("plc.timeline[" + std::to_string(i) + "]: unknown HLI field '" +
+                          write.field + "' (known:" + known + ")");
+      }
+  for (const Expectation& e : scenario.expectations) pending_.push_back({e, false, {}});
+}
+
+const HliControl& ScenarioEngine::cycle(const HliState& state) {
+  control_.cycle = state.cycle;
+  for (size_t i = 0; i < timeline_.size(); ++i) {
+    if (fired_[i] || !timeline_[i].when.holds(state, cycle_time_s_)) continue;
+    fired_[i] = true;
+    for (const ControlWrite& write : timeline_[i].set) *control_field(control_, write.field) = write.value;
+  }
+  for (Pending& p : pending_) {
+    if (p.reached || !p.expectation.when.holds(state, cycle_time_s_)) continue;
+    p.reached = true;
+    p.result = evaluate(p.expectation, state);
+  }
+  return control_;
+}
+
+void ScenarioEngine::observe(const Event& event) { seen_events_.push_back(event); }
+
+ExpectationResult ScenarioEngine::evaluate(const Expectation& e, const HliState& s) const {
+  ExpectationResult r;
+  r.what = "at " + e.when.describe();
+  std::ostringstream failures;
+  auto check = [&](bool ok, const std::string& text) {
+    if (!ok) failures << ' ' << text << ';';
+  };
+  if (e.channel_state)
+    check(s.channel_state == *e.channel_state, std::string("channel_state ") + to_string(s.channel_state) +
+                                                   " != " + to_string(*e.channel_state));
+  if (e.block_nr_r)
+    check(s.block_nr_r == *e.block_nr_r,
+          "block_nr_r " + std::to_string(s.block_nr_r) + " != " + std::to_string(*e.block_nr_r));
+  if (e.block_count_r)
+    check(s.block_count_r == *e.block_count_r,
+          "block_count_r " + std::to_string(s.block_count_r) + " != " + std::to_string(*e.block_count_r));
+  if (e.dist_prog_start_mm) {
+    const double mm = s.dist_prog_start / hli_units_per_mm;
+    check(std::abs(mm - *e.dist_prog_start_mm) <= e.tolerance_mm,
+          "dist_prog_start " + std::to_string(mm) + " mm != " + std::to_string(*e.dist_prog_start_mm));
+  }
+  for (const auto& [axis, expected] : e.axis_position_mm) {
+    for (size_t i = 0; i < s.axis_name.size(); ++i) {
+      if (s.axis_name[i] != axis) continue;
+      const double mm = static_cast<double>(s.axis_position_r[i]) / hli_units_per_mm;
+      check(std::abs(mm - expected) <= e.tolerance_mm,
+            axis + " at " + std::to_string(mm) + " mm != " + std::to_string(expected));
+    }
+  }
+  r.detail = failures.str();
+  r.passed = r.detail.empty();
+  if (r.passed) r.detail = " all checks hold";
+  return r;
+}
+
+std::vector<ExpectationResult> ScenarioEngine::finish() const {
+  std::vector<ExpectationResult> results;
+  for (const Pending& p : pending_) {
+    if (p.reached) results.push_back(p.result);
+    else results.push_back({"at " + p.expectation.when.describe(), false, " never reached"});
+  }
+  auto matches = [](const EventExpectation& x, const Event& e) {
+    return e.id == x.id && e.severity == x.severity;
+  };
+  for (const EventExpectation& x : expected_events_) {
+    int count = 0;
+    for (const Event& e : seen_events_) count += matches(x, e) ? 1 : 0;
+    ExpectationResult r;
+    r.what = std::string(x.absent ? "no " : "") + to_string(x.severity) + " " + std::to_string(x.id);
+    r.passed = x.absent ? count == 0 : count >= x.count_min;
+    r.detail = " seen " + std::to_string(count) + " time(s)";
+    results.push_back(r);
+  }
+  if (!allow_errors_) {
+    for (const Event& e : seen_events_) {
+      if (e.severity != Severity::error) continue;
+      bool expected = false;
+      for (const EventExpectation& x : expected_events_) expected = expected || (!x.absent && matches(x, e));
+      if (!expected) results.push_back({"no unexpected error", false, " " + describe(e)});
+    }
+  }
+  return results;
+}
+
+}  // namespace hil::plc

@@ -1,0 +1,49 @@
+#pragma once
+// The PLC simulator's program (RIG-5): runs a scenario's timeline against
+// the HLI, cycle by cycle, and checks its expectations.
+#include <string>
+#include <vector>
+
+#include "event.hpp"
+#include "hli.hpp"
+#include "scenario.hpp"
+
+namespace hil::plc {
+
+struct ExpectationResult {
+  std::string what;
+  bool passed = false;
+  std::string detail;
+};
+
+class ScenarioEngine {
+ public:
+  // Throws ConfigError if the timeline writes a field the HLI does not have.
+  explicit ScenarioEngine(const Scenario& scenario);
+
+  // One PLC cycle on the CNC's HLI state; returns the control to write back.
+  const HliControl& cycle(const HliState& state);
+  // An event seen on the bus (from any node but this one).
+  void observe(const Event& event);
+  // Verdict at the end of the run: one result per expectation.
+  std::vector<ExpectationResult> finish() const;
+
+ private:
+  struct Pending {
+    Expectation expectation;
+    bool reached = false;
+    ExpectationResult result;
+  };
+  ExpectationResult evaluate(const Expectation& e, const HliState& state) const;
+
+  std::vector<TimelineStep> timeline_;
+  std::vector<bool> fired_;
+  std::vector<Pending> pending_;
+  std::vector<EventExpectation> expected_events_;
+  std::vector<Event> seen_events_;
+  bool allow_errors_;
+  double cycle_time_s_;
+  HliControl control_;
+};
+
+}  // namespace hil::plc

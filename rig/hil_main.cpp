@@ -1,0 +1,80 @@
+// The `hil` command: run scenarios through the whole rig, check and compare logs.
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "config_error.hpp"
+#include "report.hpp"
+#include "run_log.hpp"
+#include "run_scenario.hpp"
+
+namespace {
+
+std::string own_directory() {
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string(".") : exe.parent_path().string();
+}
+
+int check_log(const std::string& path) {
+  std::optional<hil::logger::CheckReport> check;
+  const hil::logger::RunLog log = hil::logger::read_run_log(path, &check);
+  if (!check) {
+    std::cerr << path << ": no manifest (HIL_MANIFEST) in the log, so no limits to check against\n";
+    return 2;
+  }
+  std::cout << "log " << path << ": " << (log.scenario ? log.scenario->name : "?") << ", "
+            << log.last_cycle + 1 << " cycles\n"
+            << hil::rig::format_check(log, *check);
+  const bool passed = check->passed() && log.undecodable == 0;
+  std::cout << (passed ? "CHECK PASSED" : "CHECK FAILED") << '\n';
+  return passed ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"hil: hardware-in-the-loop rig for the CNC kernel"};
+  app.require_subcommand(1);
+
+  hil::rig::RunOptions run;
+  run.bin_dir = own_directory();
+  auto* run_cmd = app.add_subcommand("run", "run a scenario through the whole rig and report");
+  run_cmd->add_option("scenario", run.scenario_file, "scenario YAML file")->required()->check(CLI::ExistingFile);
+  run_cmd->add_option("--out", run.run_dir, "run folder (default runs/<name>-<time>)");
+  run_cmd->add_option("--port", run.port, "udpm port of this rig (default derived from the pid)")
+      ->check(CLI::Range(1024, 65535));
+  run_cmd->add_option("--bin-dir", run.bin_dir, "folder of the node executables");
+
+  std::string log_file;
+  auto* check_cmd = app.add_subcommand("check", "check a recorded log against the limits in its manifest");
+  check_cmd->add_option("log", log_file, "LCM event log")->required()->check(CLI::ExistingFile);
+
+  std::vector<std::string> pair;
+  auto* compare_cmd = app.add_subcommand("compare", "compare two logs message by message (determinism)");
+  compare_cmd->add_option("logs", pair, "two LCM event logs")->required()->expected(2)->check(CLI::ExistingFile);
+
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (*run_cmd) {
+      const hil::rig::RunResult result = hil::rig::run_scenario(run);
+      std::cout << result.report;
+      return result.passed ? 0 : 1;
+    }
+    if (*check_cmd) return check_log(log_file);
+    if (*compare_cmd) {
+      const std::string difference = hil::logger::compare_run_logs(pair[0], pair[1]);
+      std::cout << (difference.empty() ? "identical" : difference) << '\n';
+      return difference.empty() ? 0 : 1;
+    }
+  } catch (const hil::ConfigError& e) {
+    std::cerr << "hil: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "hil: " << e.what() << '\n';
+    return 2;
+  }
+  return 0;
+}

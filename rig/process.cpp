@@ -1,0 +1,72 @@
+#include "process.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <stdexcept>
+#include <thread>
+
+namespace hil::rig {
+
+Process::Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file)
+    : name_(std::move(name)) {
+  const int fd = ::open(output_file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write " + output_file + ": " + std::strerror(errno));
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const pid_t parent = ::getpid();
+  pid_ = ::fork();
+  if (pid_ < 0) {
+    ::close(fd);
+    throw std::runtime_error("fork failed: " + std::string(std::strerror(errno)));
+  }
+  if (pid_ == 0) {
+    // A node never outlives the rig that started it.
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != parent) ::_exit(127);
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    ::execv(args[0], args.data());
+    const std::string msg = "cannot start " + argv[0] + ": " + std::strerror(errno) + "\n";
+    (void)!::write(STDERR_FILENO, msg.data(), msg.size());
+    ::_exit(127);
+  }
+  ::close(fd);
+}
+
+Process::~Process() {
+  if (!status_) stop(std::chrono::milliseconds(500));
+}
+
+std::optional<int> Process::poll() {
+  if (status_ || pid_ < 0) return status_;
+  int raw = 0;
+  if (::waitpid(pid_, &raw, WNOHANG) == pid_)
+    status_ = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  return status_;
+}
+
+std::optional<int> Process::wait_for(std::chrono::milliseconds timeout) {
+  const auto give_up = std::chrono::steady_clock::now() + timeout;
+  while (!poll()) {
+    if (std::chrono::steady_clock::now() >= give_up) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return status_;
+}
+
+int Process::stop(std::chrono::milliseconds grace) {
+  if (poll()) return *status_;
+  ::kill(pid_, SIGTERM);
+  if (wait_for(grace)) return *status_;
+  ::kill(pid_, SIGKILL);
+  while (!poll()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  return *status_;
+}
+
+}  // namespace hil::rig

@@ -1,0 +1,30 @@
+#pragma once
+// `hil run`: starts every process of a scenario on a private LCM port in
+// lock-step, waits for the end, checks the log offline and reports (RIG-5).
+#include <string>
+
+namespace hil::rig {
+
+struct RunOptions {
+  std::string scenario_file;
+  std::string run_dir;       // "" = runs/<name>-<time> below the current folder
+  int port = 0;              // 0 = derived from the process id
+  std::string bin_dir;       // where cnc, axis_sim, plc_sim, hil_logger are
+  bool quiet = false;        // summary line only
+};
+
+struct RunResult {
+  bool passed = false;
+  std::string run_dir;
+  std::string log_file;
+  std::string report;
+};
+
+// Throws ConfigError for a scenario that cannot run.
+RunResult run_scenario(const RunOptions& options);
+
+// The rig's LCM URL for a port: multicast that never leaves the machine
+// (ttl=0) and a receive buffer deep enough for lock-step bursts.
+std::string rig_url(int port);
+
+}  // namespace hil::rig
