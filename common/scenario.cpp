@@ -84,8 +84,9 @@ Expectation parse_expectation(const YAML::Node& node, const std::string& where) 
 
 EventExpectation parse_event_expectation(const YAML::Node& node, const std::string& where) {
   EventExpectation e;
-  if (!node["id"]) throw ConfigError(where + ": 'id' is missing");
-  e.id = node["id"].as<int32_t>();
+  if (!node["id"] && !node["parameter"]) throw ConfigError(where + ": give 'id' and/or 'parameter'");
+  if (node["id"]) e.id = node["id"].as<int32_t>();
+  if (node["parameter"]) e.parameter = node["parameter"].as<std::string>();
   if (node["severity"]) {
     const std::string s = node["severity"].as<std::string>();
     if (s == "warning") e.severity = Severity::warning;
@@ -93,6 +94,7 @@ EventExpectation parse_event_expectation(const YAML::Node& node, const std::stri
     else if (s == "info") e.severity = Severity::info;
     else throw ConfigError(where + ": severity must be info, warning or error");
   }
+  if (node["nc_line"]) e.nc_line = node["nc_line"].as<int64_t>();
   if (node["count_min"]) e.count_min = node["count_min"].as<int>();
   if (node["absent"]) e.absent = node["absent"].as<bool>();
   return e;

@@ -55,8 +55,10 @@ struct Expectation {
 struct EventExpectation {
   int32_t id = 0;
   Severity severity = Severity::error;
-  int count_min = 1;  // at least this many; 0 with `absent` means none allowed
-  bool absent = false;
+  std::string parameter;  // if set, only events about this parameter ID count
+  int64_t nc_line = 0;  // if > 0, only events from this NC program line count
+  int count_min = 1;    // at least this many
+  bool absent = false;  // instead: none may appear
 };
 
 struct Scenario {

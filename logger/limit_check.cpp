@@ -1,6 +1,7 @@
 #include "limit_check.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace hil::logger {
 
@@ -19,10 +20,10 @@ LimitChecker::LimitChecker(const MachineConfig& machine)
 }
 
 void LimitChecker::check(std::vector<Violation>& out, double& max_seen, double value, double limit,
-                         int64_t cycle, const std::string& axis, const char* quantity) const {
+                         int64_t cycle, const std::string& axis, const char* quantity, double noise) const {
   const double magnitude = std::abs(value);
   max_seen = std::max(max_seen, magnitude);
-  if (limit > 0 && magnitude > limit * (1 + limit_tolerance) + 1e-12)
+  if (limit > 0 && magnitude > limit * (1 + limit_tolerance) + noise)
     out.push_back({cycle * machine_.cycle_time_s(), axis, quantity, value, limit});
 }
 
@@ -38,9 +39,9 @@ void LimitChecker::add_actual(int axis, int64_t cycle, double velocity, double a
   ++s.states;
   s.act_v = std::max(s.act_v, std::abs(velocity));
   check(actual_violations_, s.act_a, acceleration, s.a_err_limit, cycle, s.axis,
-        "actual acceleration (P-AXIS-00442 limit)");
+        "actual acceleration (P-AXIS-00442 limit)", 0);
   check(actual_violations_, s.following_error, following_error, s.following_error_max, cycle, s.axis,
-        "following error");
+        "following error", 0);
 }
 
 CheckReport LimitChecker::finish() const {
@@ -50,6 +51,12 @@ CheckReport LimitChecker::finish() const {
   for (size_t i = 0; i < setpoints_.size(); ++i) {
     const Trace& t = setpoints_[i];
     AxisSummary& s = summary_[i];
+    // The n-th difference of positions rounded to `ulp` can be off by
+    // 2^n ulp / dt^n: allow for that noise, no more.
+    double scale = 1.0;
+    for (double p : t.position) scale = std::max(scale, std::abs(p));
+    const double ulp = scale * std::numeric_limits<double>::epsilon();
+    const double noise[] = {0, 2 * ulp / dt, 4 * ulp / (dt * dt), 8 * ulp / (dt * dt * dt)};
     // Differences only across consecutive cycles; a gap restarts them.
     double v1 = 0, a1 = 0;
     int run = 0;  // consecutive samples so far
@@ -60,12 +67,14 @@ CheckReport LimitChecker::finish() const {
       }
       ++run;
       const double v = (t.position[k] - t.position[k - 1]) / dt;
-      check(report.violations, s.cmd_v, v, s.v_max, t.cycle[k], s.axis, "commanded velocity");
+      check(report.violations, s.cmd_v, v, s.v_max, t.cycle[k], s.axis, "commanded velocity", noise[1]);
       if (run >= 3) {
         const double a = (v - v1) / dt;
-        check(report.violations, s.cmd_a, a, s.a_max, t.cycle[k], s.axis, "commanded acceleration");
-        if (run >= 4) check(report.violations, s.cmd_j, (a - a1) / dt, s.j_max, t.cycle[k], s.axis,
-                            "commanded jerk");
+        check(report.violations, s.cmd_a, a, s.a_max, t.cycle[k], s.axis, "commanded acceleration",
+              noise[2]);
+        if (run >= 4)
+          check(report.violations, s.cmd_j, (a - a1) / dt, s.j_max, t.cycle[k], s.axis, "commanded jerk",
+                noise[3]);
         a1 = a;
       }
       v1 = v;

@@ -50,7 +50,7 @@ class LimitChecker {
     std::vector<double> position;
   };
   void check(std::vector<Violation>& out, double& max_seen, double value, double limit, int64_t cycle,
-             const std::string& axis, const char* quantity) const;
+             const std::string& axis, const char* quantity, double noise) const;
 
   MachineConfig machine_;
   std::vector<Trace> setpoints_;

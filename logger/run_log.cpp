@@ -9,6 +9,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
@@ -79,6 +80,8 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       }
     }
   }
+  if (log.messages_per_channel.empty() && std::filesystem::file_size(path) > 0)
+    throw std::runtime_error(path + " is not an LCM event log (no event found)");
   if (report && checker) *report = checker->finish();
   return log;
 }

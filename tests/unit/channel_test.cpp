@@ -1,0 +1,124 @@
+// KRN-4 (HLI program start, block_nr_r, block_count_r), DPS-1 (covered
+// distance, so far for lines and arcs), KRN-2 (a decode error stops the
+// channel after the last good block), KRN-3 (limits over a whole program).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "channel.hpp"
+#include "limit_check.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+
+namespace {
+
+HliControl start_command(bool command, bool enable = true) {
+  HliControl c;
+  c.program_start = {command, enable};
+  return c;
+}
+
+// Runs the channel until it has finished (or max cycles); returns cycles run.
+int64_t run_to_end(Channel& channel, int64_t first_cycle, logger::LimitChecker* checker = nullptr) {
+  int64_t k = first_cycle;
+  for (; !channel.finished() && k < first_cycle + 200000; ++k) {
+    channel.step(k, HliControl{});
+    if (checker)
+      for (size_t i = 0; i < channel.setpoints().size(); ++i)
+        checker->add_setpoint(static_cast<int>(i), k, channel.setpoints()[i].position);
+  }
+  return k;
+}
+
+const char* program =
+    "N10 G00 X10 Y10 Z5\n"
+    "N20 G01 Z-2 F600\n"
+    "N30 X80 F3000\n"
+    "N40 G03 X100 Y30 I0 J20\n"
+    "N50 M30\n";
+
+}  // namespace
+
+TEST_CASE("KRN-4 channel: the program starts on a rising edge of command_w while enable_w", "[channel]") {
+  Channel channel(test::xyz_machine(), program);
+  channel.step(0, start_command(true, false));  // not enabled
+  CHECK(channel.hli().channel_state == ChannelState::ready);
+  CHECK(channel.hli().stop_conditions_r == stop_condition::ipo_input_empty);
+  channel.step(1, start_command(true, true));  // still high, no new edge
+  CHECK(channel.hli().channel_state == ChannelState::ready);
+  channel.step(2, start_command(false, true));
+  channel.step(3, start_command(true, true));  // rising edge while enabled
+  CHECK(channel.hli().channel_state == ChannelState::active);
+  CHECK(channel.hli().program_start.state_r);
+  CHECK(channel.hli().program_start.request_r);
+  CHECK(channel.hli().block_nr_r == 10);
+  CHECK(channel.hli().block_count_r == 1);
+  CHECK(channel.hli().stop_conditions_r == 0);
+  channel.step(4, start_command(false, true));
+  channel.step(5, start_command(true, true));  // an edge while running is refused
+  const std::vector<Event> events = channel.take_events();
+  REQUIRE(events.size() == 1);
+  CHECK(events[0].severity == Severity::warning);
+  CHECK_THAT(events[0].message, Catch::Contains("channel is ACTIVE"));
+}
+
+TEST_CASE("KRN-4 DPS-1 channel: block_nr_r, block_count_r and dist_prog_start follow the interpolator",
+          "[channel]") {
+  Channel channel(test::xyz_machine(), program);
+  channel.step(0, start_command(true));
+  std::vector<int64_t> blocks_seen{channel.hli().block_nr_r};
+  double previous_dist = 0;
+  int64_t k = 1;
+  for (; !channel.finished(); ++k) {
+    channel.step(k, HliControl{});
+    const HliState& s = channel.hli();
+    if (s.block_nr_r != blocks_seen.back()) blocks_seen.push_back(s.block_nr_r);
+    CHECK(s.dist_prog_start >= previous_dist);  // only grows going forward
+    previous_dist = s.dist_prog_start;
+    // HLI positions are the commanded positions in 0.1 um.
+    CHECK(s.axis_position_r[0] == std::llround(channel.setpoints()[0].position * 1e4));
+  }
+  CHECK(blocks_seen == std::vector<int64_t>{10, 20, 30, 40, 50});
+  const HliState& end = channel.hli();
+  CHECK(end.channel_state == ChannelState::program_end);
+  CHECK(end.block_count_r == 5);
+  // 15 + 7 + 70 + a quarter circle of radius 20: the exact path lengths.
+  const double expected_mm = std::sqrt(10.0 * 10 + 10 * 10 + 5 * 5) + 7 + 70 + 20 * M_PI / 2;
+  CHECK(end.dist_prog_start == Approx(expected_mm * 1e4).epsilon(1e-12));
+  CHECK(channel.setpoints()[0].position == 100);
+  CHECK(channel.setpoints()[1].position == 30);
+  CHECK(channel.setpoints()[2].position == -2);
+  CHECK(channel.setpoints()[0].velocity == 0);
+}
+
+TEST_CASE("KRN-3 channel: a whole program stays within every axis' limits", "[channel]") {
+  const MachineConfig machine = test::xyz_machine();
+  Channel channel(machine, std::string(program) + "G00 X0 Y0 Z0\n");
+  logger::LimitChecker checker(machine);
+  channel.step(0, start_command(true));
+  run_to_end(channel, 1, &checker);
+  const logger::CheckReport report = checker.finish();
+  for (const auto& v : report.violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
+  // The limits are used, not only respected: the profile is time-optimal per block.
+  CHECK(report.axes[0].cmd_a > 0.9 * machine.axes[0].a_max);
+}
+
+TEST_CASE("KRN-2 channel: after a decode error the channel runs the good blocks, then stops in error",
+          "[channel]") {
+  Channel channel(test::xyz_machine(), "N10 G01 X10 F6000\nN20 Y5\nN30 G17\nN40 X100\nM30\n");
+  channel.step(0, start_command(true));
+  const std::vector<Event> events = channel.take_events();
+  REQUIRE(events.size() == 1);  // reported when decoding reaches it, at program start
+  CHECK(events[0].nc_line == 3);
+  CHECK(events[0].block_nr == 30);
+  CHECK(channel.hli().channel_state == ChannelState::active);
+  run_to_end(channel, 1);
+  CHECK(channel.hli().channel_state == ChannelState::error);
+  CHECK(channel.hli().block_nr_r == 20);
+  CHECK((channel.hli().stop_conditions_r & stop_condition::channel_error) != 0);
+  // Never beyond what was decoded correctly: the end of N20.
+  CHECK(channel.setpoints()[0].position == 10);
+  CHECK(channel.setpoints()[1].position == 5);
+}

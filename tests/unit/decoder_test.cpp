@@ -1,0 +1,98 @@
+// KRN-1 (decoder subset) and KRN-2 (errors carry line and block number).
+#include <catch2/catch.hpp>
+
+#include "decoder.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+
+namespace {
+DecodedProgram decode(const std::string& text) {
+  return decode_program(text, test::xyz_machine(), {0, 0, 0});
+}
+}  // namespace
+
+TEST_CASE("KRN-1 decoder: N numbers, G00/G01, modal feed, absolute and incremental", "[decoder]") {
+  const DecodedProgram p = decode(
+      "%prog\n"
+      "N10 G00 X10 Y20 Z5 ; rapid\n"
+      "N20 G01 X20 F600 (feed 10 mm/s)\n"
+      "N30 G91 Y-5\n"
+      "N40 G90 Z0\n"
+      "N50 M30\n");
+  REQUIRE_FALSE(p.error);
+  REQUIRE(p.blocks.size() == 5);
+  CHECK(p.blocks[0].block_nr == 10);
+  CHECK(p.blocks[0].nc_line == 2);
+  CHECK(p.blocks[0].motion.type == MotionType::rapid);
+  CHECK(p.blocks[0].motion.end == std::vector<double>{10, 20, 5});
+  CHECK(p.blocks[1].motion.type == MotionType::linear);
+  CHECK(p.blocks[1].motion.feed == Approx(10.0));
+  CHECK(p.blocks[1].motion.start == std::vector<double>{10, 20, 5});
+  CHECK(p.blocks[2].motion.end == std::vector<double>{20, 15, 5});
+  CHECK(p.blocks[2].motion.feed == Approx(10.0));  // modal
+  CHECK(p.blocks[3].motion.end == std::vector<double>{20, 15, 0});
+  CHECK(p.blocks[4].program_end);
+  CHECK_FALSE(p.blocks[4].has_motion);
+}
+
+TEST_CASE("KRN-1 decoder: G02/G03 with I/J centre incremental to the start point", "[decoder]") {
+  const DecodedProgram p = decode("G01 X10 F1000\nG03 X20 Y10 I0 J10\nG02 X10 Y20 I-10 J0\nG03 I-5\n");
+  REQUIRE_FALSE(p.error);
+  REQUIRE(p.blocks.size() == 4);
+  CHECK(p.blocks[1].motion.type == MotionType::arc_ccw);
+  CHECK(p.blocks[1].motion.center_x == Approx(10));
+  CHECK(p.blocks[1].motion.center_y == Approx(10));
+  CHECK(p.blocks[2].motion.type == MotionType::arc_cw);
+  CHECK(p.blocks[2].motion.center_x == Approx(10));
+  CHECK(p.blocks[2].motion.center_y == Approx(10));
+  // Only I given: a full circle back to the start point.
+  CHECK(p.blocks[3].motion.end == p.blocks[3].motion.start);
+  CHECK(p.blocks[3].motion.center_x == Approx(5));
+}
+
+TEST_CASE("KRN-1 decoder: program ends at M30; text after it is not decoded", "[decoder]") {
+  const DecodedProgram p = decode("G01 X1 F100\nM30\nthis is not NC code\n");
+  REQUIRE_FALSE(p.error);
+  CHECK(p.blocks.size() == 2);
+}
+
+TEST_CASE("KRN-2 decoder: an error names its line and block; the blocks before it are kept", "[decoder]") {
+  struct Case {
+    const char* line;
+    const char* message_part;
+  };
+  const Case cases[] = {
+      {"N30 G17 X5", "G code 'G17' is not supported yet"},
+      {"N30 M3", "M function 'M3' is not supported yet"},
+      {"N30 Q5", "Q is not an axis"},
+      {"N30 X", "needs a number"},
+      {"N30 X1.2.3", "malformed number"},
+      {"N30 X1 X2", "programmed twice"},
+      {"N30 G01 G02 X1", "two motion G codes"},
+      {"N30 G02 X30 Y0 I5 J0", "does not lie on the circle"},
+      {"N30 #DEL DIST2GO", "'#DEL' is not supported yet"},
+      {"N30 $FOR P1=0,1,1", "'$FOR' is not supported yet"},
+      {"N30 X1 (open comment", "comment '(' is not closed"},
+      {"N30 G01 X5 I3", "only allowed with G02/G03"},
+      {"N30 F0", "must be > 0"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.line);
+    const DecodedProgram p = decode(std::string("N10 G01 X1 F100\nN20 Y1\n") + c.line + "\nN40 X50\nM30\n");
+    REQUIRE(p.error);
+    CHECK(p.error->severity == Severity::error);
+    CHECK(p.error->nc_line == 3);
+    CHECK(p.error->block_nr == 30);
+    CHECK_THAT(p.error->message, Catch::Contains(c.message_part));
+    CHECK(p.blocks.size() == 2);  // exactly what was decoded correctly
+  }
+}
+
+TEST_CASE("KRN-2 decoder: G01 without any feed is an error", "[decoder]") {
+  const DecodedProgram p = decode("G01 X10\n");
+  REQUIRE(p.error);
+  CHECK(p.error->nc_line == 1);
+  CHECK_THAT(p.error->message, Catch::Contains("no feed F"));
+}

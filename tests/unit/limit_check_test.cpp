@@ -1,0 +1,72 @@
+// RIG-4: the offline checker names each violation with time, axis, value
+// and limit, and reports per-axis maxima.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "limit_check.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::logger;
+
+TEST_CASE("RIG-4 limit check: a motion within the limits passes and reports its maxima", "[check]") {
+  const MachineConfig m = test::xyz_machine();
+  LimitChecker checker(m);
+  // x = 1 - cos(w t): v = w sin, a = w^2 cos, j = w^3 sin, with w = 10 rad/s.
+  const double w = 10, dt = m.cycle_time_s();
+  for (int64_t k = 0; k < 2000; ++k) checker.add_setpoint(0, k, 1 - std::cos(w * k * dt));
+  const CheckReport r = checker.finish();
+  CHECK(r.passed());
+  CHECK(r.axes[0].cmd_v == Approx(w).epsilon(1e-3));
+  CHECK(r.axes[0].cmd_a == Approx(w * w).epsilon(1e-3));
+  CHECK(r.axes[0].cmd_j == Approx(w * w * w).epsilon(1e-2));
+  CHECK(r.axes[0].setpoints == 2000);
+}
+
+TEST_CASE("RIG-4 limit check: violations name time, axis, quantity, value and limit", "[check]") {
+  const MachineConfig m = test::xyz_machine();  // Y: v_max 250, a_max 2000
+  LimitChecker checker(m);
+  // A velocity step of Y at cycle 10: 300 mm/s from there on.
+  for (int64_t k = 0; k < 20; ++k) checker.add_setpoint(1, k, k < 10 ? 0.0 : 0.3 * (k - 9));
+  checker.add_actual(2, 7, 0, 3500, 0.6);  // Z: 00442 limit 3000, FE limit 0.5
+  const CheckReport r = checker.finish();
+  REQUIRE_FALSE(r.passed());
+  bool velocity = false, acceleration = false, jerk = false, actual = false, fe = false;
+  for (const Violation& v : r.violations) {
+    if (v.quantity == "commanded velocity") {
+      velocity = true;
+      CHECK(v.axis == "Y");
+      CHECK(v.value == Approx(300));
+      CHECK(v.limit == 250);
+      CHECK(v.time_s >= 0.010 - 1e-12);
+    }
+    if (v.quantity == "commanded acceleration") {
+      acceleration = true;
+      CHECK(v.time_s == Approx(0.010));
+      CHECK(v.value == Approx(300000));
+    }
+    jerk = jerk || v.quantity == "commanded jerk";
+    if (v.quantity == "actual acceleration (P-AXIS-00442 limit)") {
+      actual = true;
+      CHECK(v.axis == "Z");
+      CHECK(v.limit == 3000);
+      CHECK(v.time_s == Approx(0.007));
+    }
+    fe = fe || (v.quantity == "following error" && v.limit == 0.5);
+  }
+  CHECK(velocity);
+  CHECK(acceleration);
+  CHECK(jerk);
+  CHECK(actual);
+  CHECK(fe);
+}
+
+TEST_CASE("RIG-4 limit check: a gap in the cycles restarts the differences", "[check]") {
+  LimitChecker checker(test::xyz_machine());
+  checker.add_setpoint(0, 0, 0.0);
+  checker.add_setpoint(0, 1, 0.0);
+  checker.add_setpoint(0, 100, 5.0);  // 5 mm later, but 99 cycles apart: no jump
+  checker.add_setpoint(0, 101, 5.0);
+  CHECK(checker.finish().passed());
+}

@@ -1,0 +1,68 @@
+// KRN-3: path limits keep every axis within its own v, a, j limits, on lines
+// and on (helical) arcs. Checked through the offline checker, which takes
+// v, a, j from differences of the sampled positions (RIG-4).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "decoder.hpp"
+#include "limit_check.hpp"
+#include "path_segment.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+
+namespace {
+
+// Samples a rest-to-rest run over the segment at 0.1 ms and checks it.
+logger::CheckReport sample(const PathSegment& seg, MachineConfig machine) {
+  machine.cycle_time_us = 100;
+  logger::LimitChecker checker(machine);
+  const JerkProfile profile = rest_to_rest(seg.length(), seg.limits());
+  const double dt = machine.cycle_time_s();
+  const int64_t n = static_cast<int64_t>(std::ceil(profile.duration() / dt)) + 3;
+  for (int64_t k = 0; k <= n; ++k) {
+    const double s = std::min(profile.at(k * dt).p, seg.length());
+    const std::vector<double> p = seg.position(s);
+    for (size_t i = 0; i < p.size(); ++i) checker.add_setpoint(static_cast<int>(i), k, p[i]);
+  }
+  return checker.finish();
+}
+
+Motion motion_of(const std::string& nc) {
+  const DecodedProgram p = decode_program(nc, test::xyz_machine(), {0, 0, 0});
+  REQUIRE_FALSE(p.error);
+  return p.blocks.back().motion;
+}
+
+}  // namespace
+
+TEST_CASE("KRN-3 path: a line's limits are each axis' limit over its share of the path", "[path]") {
+  const MachineConfig m = test::xyz_machine();
+  const PathSegment seg(motion_of("G01 X30 Z40 F60000"), m);  // direction (0.6, 0, 0.8)
+  CHECK(seg.length() == Approx(50));
+  CHECK(seg.limits().v == Approx(std::min(250 / 0.6, 150 / 0.8)));
+  CHECK(seg.limits().a == Approx(std::min(2000 / 0.6, 1500 / 0.8)));
+  CHECK(seg.limits().j == Approx(std::min(40000 / 0.6, 30000 / 0.8)));
+  for (const auto& v : sample(seg, m).violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
+  // The programmed feed bounds the path velocity; G00 uses each axis' rapid velocity.
+  CHECK(PathSegment(motion_of("G01 X30 Z40 F600"), m).limits().v == Approx(10));
+  CHECK(PathSegment(motion_of("G00 X30"), m).limits().v == Approx(250));
+}
+
+TEST_CASE("KRN-3 path: arcs keep every axis within v, a and j, whatever the radius", "[path]") {
+  const MachineConfig m = test::xyz_machine();
+  for (const char* nc : {"G01 X1 F30000\nG03 X1 Y0 I1 J0",        // full circle, r = 1
+                         "G01 X10 F30000\nG02 X0 Y10 I-10 J0",    // quarter, r = 10
+                         "G01 X100 F30000\nG03 X-100 Y0 I-100",   // half, r = 100
+                         "G01 X5 F30000\nG03 X-5 Y0 Z20 I-5"}) {  // helix
+    INFO(nc);
+    const PathSegment seg(motion_of(nc), m);
+    const logger::CheckReport report = sample(seg, m);
+    for (const auto& v : report.violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
+    // The end point is exact.
+    const std::vector<double> end = seg.position(seg.length());
+    for (size_t i = 0; i < end.size(); ++i) CHECK(end[i] == Approx(seg.end()[i]).margin(1e-9));
+  }
+}

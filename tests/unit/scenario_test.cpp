@@ -1,0 +1,128 @@
+// RIG-5: scenario files, the PLC simulator's timeline and expectations;
+// RIG-3: the unit of P-AXIS-00441/00442 is checked when a machine is read.
+#include <catch2/catch.hpp>
+
+#include "config_error.hpp"
+#include "scenario.hpp"
+#include "scenario_engine.hpp"
+
+using namespace hil;
+
+namespace {
+
+const std::string machine_yaml = R"(
+machine:
+  cycle_time_us: 1000
+  axes:
+    - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002}
+)";
+
+Scenario scenario(const std::string& rest) {
+  return parse_scenario(YAML::Load(machine_yaml + "nc_program: \"G01 X1 F100\\n\"\n" + rest));
+}
+
+HliState state(int64_t cycle, ChannelState cs = ChannelState::ready, int64_t block = 0) {
+  HliState s;
+  s.cycle = cycle;
+  s.channel_state = cs;
+  s.block_nr_r = block;
+  s.axis_name = {"X"};
+  s.axis_position_r = {0};
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("RIG-5 scenario: timeline steps write control unit fields once, when their trigger holds",
+          "[scenario]") {
+  const Scenario s = scenario(R"(
+plc:
+  timeline:
+    - when: {cycle: 3}
+      set: {program_start.enable_w: true, program_start.command_w: true}
+    - when: {channel_state: ACTIVE, block_nr_r: 20}
+      set: {program_start.command_w: false}
+)");
+  plc::ScenarioEngine engine(s);
+  CHECK_FALSE(engine.cycle(state(2)).program_start.command_w);
+  CHECK(engine.cycle(state(3)).program_start.command_w);
+  CHECK(engine.cycle(state(4)).program_start.enable_w);
+  CHECK(engine.cycle(state(5, ChannelState::active, 10)).program_start.command_w);
+  const HliControl& c = engine.cycle(state(6, ChannelState::active, 20));
+  CHECK_FALSE(c.program_start.command_w);
+  CHECK(c.program_start.enable_w);
+  CHECK(c.cycle == 6);
+}
+
+TEST_CASE("RIG-5 scenario: unknown HLI fields and triggers are refused with their place", "[scenario]") {
+  const Scenario s = scenario("plc:\n  timeline:\n    - when: {cycle: 1}\n      set: {feed_hold.command_w: true}\n");
+  CHECK_THROWS_WITH(plc::ScenarioEngine(s), Catch::Contains("plc.timeline[0]: unknown HLI field 'feed_hold.command_w'"));
+  CHECK_THROWS_WITH(scenario("plc:\n  timeline:\n    - when: {velocity: 1}\n      set: {}\n"),
+                    Catch::Contains("unknown trigger 'velocity'"));
+  CHECK_THROWS_WITH(scenario("expect:\n  - when: program_end\n    axis_position_mm: {Q: 1}\n"),
+                    Catch::Contains("axis 'Q' is not on the machine"));
+}
+
+TEST_CASE("RIG-5 scenario: expectations pass, fail with the reason, or were never reached", "[scenario]") {
+  const Scenario s = scenario(R"(
+expect:
+  - when: program_end
+    block_nr_r: 30
+    axis_position_mm: {X: 1.0}
+  - when: {block_nr_r: 20}
+    channel_state: ACTIVE
+  - when: {block_nr_r: 99}
+    channel_state: ACTIVE
+expect_events:
+  - {id: 50810, severity: warning}
+)");
+  plc::ScenarioEngine engine(s);
+  engine.cycle(state(1, ChannelState::active, 20));
+  HliState end = state(2, ChannelState::program_end, 30);
+  end.axis_position_r = {10005};  // 1.0005 mm: inside the default 0.001 mm
+  engine.cycle(end);
+  Event warning;
+  warning.severity = Severity::warning;
+  warning.id = 50810;
+  engine.observe(warning);
+  Event error;
+  error.message = "something broke";
+  engine.observe(error);
+  const auto results = engine.finish();
+  REQUIRE(results.size() == 5);
+  CHECK(results[0].passed);
+  CHECK(results[1].passed);
+  CHECK_FALSE(results[2].passed);
+  CHECK_THAT(results[2].detail, Catch::Contains("never reached"));
+  CHECK(results[3].passed);  // the expected warning was seen
+  CHECK_FALSE(results[4].passed);  // an error nobody expected
+  CHECK_THAT(results[4].detail, Catch::Contains("something broke"));
+}
+
+TEST_CASE("RIG-5 scenario: a failed check says what was found", "[scenario]") {
+  const Scenario s = scenario("expect:\n  - when: program_end\n    axis_position_mm: {X: 2}\n");
+  plc::ScenarioEngine engine(s);
+  HliState end = state(1, ChannelState::program_end);
+  end.axis_position_r = {10000};
+  engine.cycle(end);
+  const auto results = engine.finish();
+  REQUIRE(results.size() == 1);
+  CHECK_FALSE(results[0].passed);
+  CHECK_THAT(results[0].detail, Catch::Contains("X at 1.000000 mm != 2.000000"));
+}
+
+TEST_CASE("RIG-3 machine: P-AXIS-00441/00442 below 1000 (limit under a_max) are refused", "[scenario]") {
+  const std::string axis = "{name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002";
+  auto machine = [&](const std::string& extra) {
+    return parse_machine_config(YAML::Load("axes:\n  - " + axis + extra + "}\n")).axes.at(0);
+  };
+  CHECK(machine("").accel_error_limit() == 2000);
+  CHECK(machine(", dyn_monitoring_a_warn: 1100, dyn_monitoring_a_err: 1200").accel_warning_limit() == 1100);
+  CHECK_THROWS_WITH(machine(", dyn_monitoring_a_warn: 500"), Catch::Contains("P-AXIS-00441"));
+  CHECK_THROWS_WITH(machine(", dyn_monitoring_a_warn: 1500, dyn_monitoring_a_err: 1000"),
+                    Catch::Contains("P-AXIS-00442"));
+  CHECK_THROWS_WITH(parse_machine_config(YAML::Load(
+                        "axes: [{name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: -1, velocity_lag_s: 0.002}]")),
+                    Catch::Contains("'kv' must be > 0"));
+  CHECK_THROWS_WITH(parse_machine_config(YAML::Load("axes: []")), Catch::Contains("non-empty"));
+}
