@@ -25,10 +25,12 @@ AccelerationCheck AccelerationMonitor::check(double acceleration, std::vector<Ev
     e.message = msg.str();
     events.push_back(e);
   };
+  // Each threshold reports its own rising excursion: a jump past both in one
+  // cycle gives the warning and the error.
+  if (now.warning && !previous_.warning)
+    raise(Severity::warning, "P-AXIS-00441", axis_.dyn_monitoring_a_warn, axis_.accel_warning_limit());
   if (now.error && !previous_.error)
     raise(Severity::error, "P-AXIS-00442", axis_.dyn_monitoring_a_err, axis_.accel_error_limit());
-  else if (now.warning && !previous_.warning)
-    raise(Severity::warning, "P-AXIS-00441", axis_.dyn_monitoring_a_warn, axis_.accel_warning_limit());
   previous_ = now;
   return now;
 }

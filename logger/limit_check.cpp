@@ -1,5 +1,6 @@
 #include "limit_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -23,8 +24,23 @@ void LimitChecker::check(std::vector<Violation>& out, double& max_seen, double v
                          int64_t cycle, const std::string& axis, const char* quantity, double noise) const {
   const double magnitude = std::abs(value);
   max_seen = std::max(max_seen, magnitude);
-  if (limit > 0 && magnitude > limit * (1 + limit_tolerance) + noise)
-    out.push_back({cycle * machine_.cycle_time_s(), axis, quantity, value, limit});
+  if (!(limit > 0 && magnitude > limit * (1 + limit_tolerance) + noise)) return;
+  const double t = cycle * machine_.cycle_time_s();
+  // Quantities of one axis interleave in `out`: the episode to extend, if
+  // any, is among the last few entries.
+  for (size_t back = 0; back < std::min<size_t>(out.size(), 4); ++back) {
+    Violation& v = out[out.size() - 1 - back];
+    if (v.axis != axis || v.quantity != quantity) continue;
+    if (std::llround(v.end_time_s / machine_.cycle_time_s()) + 1 != cycle) break;
+    v.end_time_s = t;
+    ++v.cycles;
+    if (magnitude > std::abs(v.value)) {
+      v.value = value;
+      v.worst_time_s = t;
+    }
+    return;
+  }
+  out.push_back({t, t, 1, axis, quantity, value, t, limit});
 }
 
 void LimitChecker::add_setpoint(int axis, int64_t cycle, double position) {
@@ -80,6 +96,8 @@ CheckReport LimitChecker::finish() const {
       v1 = v;
     }
   }
+  std::stable_sort(report.violations.begin(), report.violations.end(),
+                   [](const Violation& a, const Violation& b) { return a.time_s < b.time_s; });
   report.axes = summary_;
   return report;
 }

@@ -12,11 +12,16 @@
 
 namespace hil::logger {
 
+// One episode: consecutive cycles in which one quantity of one axis is
+// beyond its limit, so a long overload is one line, not hundreds.
 struct Violation {
-  double time_s = 0;
+  double time_s = 0;       // first cycle of the episode
+  double end_time_s = 0;   // last cycle of the episode
+  int64_t cycles = 0;
   std::string axis;
-  std::string quantity;  // e.g. "commanded acceleration"
-  double value = 0;
+  std::string quantity;    // e.g. "commanded acceleration"
+  double value = 0;        // the worst (largest |value|) of the episode
+  double worst_time_s = 0;
   double limit = 0;
 };
 

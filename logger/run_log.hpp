@@ -36,8 +36,8 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report 
 
 // Compares two logs channel by channel, message by message, on the payload
 // bytes (all times in them are simulated, so equal runs give equal bytes).
-// Channels of the HIL_PARTICIPANT handshake are left out: who says "ready"
-// first is wall-clock order. Returns "" if identical, else the first difference.
+// HIL_PARTICIPANT (the handshake) and LCM_SELF_TEST are left out: they
+// follow wall-clock order. Returns "" if identical, else the first difference.
 std::string compare_run_logs(const std::string& a, const std::string& b);
 
 }  // namespace hil::logger

@@ -31,10 +31,13 @@ std::string format_check(const logger::RunLog& log, const logger::CheckReport& r
         << fmt("%8.5f / %-8.5f", a.following_error, a.following_error_max)
         << (a.following_error_max > 0 ? "" : "(none)") << '\n';
   }
-  out << "limit violations: " << report.violations.size() << '\n';
+  int64_t violating_cycles = 0;
+  for (const auto& v : report.violations) violating_cycles += v.cycles;
+  out << "limit violations: " << report.violations.size() << " (" << violating_cycles << " cycles)\n";
   for (const auto& v : report.violations)
-    out << "  t=" << fmt("%.4f s", v.time_s, 0) << " axis " << v.axis << ": " << v.quantity << ' ' << v.value
-        << " exceeds " << v.limit << '\n';
+    out << "  t=" << fmt("%.4f", v.time_s, 0) << ".." << fmt("%.4f s", v.end_time_s, 0) << " (" << v.cycles
+        << " cycles) axis " << v.axis << ": " << v.quantity << " up to " << v.value << " at t="
+        << fmt("%.4f s", v.worst_time_s, 0) << ", limit " << v.limit << '\n';
   int warnings = 0;
   for (const auto& e : log.events) warnings += e.event.severity == Severity::warning ? 1 : 0;
   out << "events: " << count_errors(log) << " errors, " << warnings << " warnings\n";

@@ -79,6 +79,8 @@ TEST_CASE("RIG-3 acceleration monitor: P-AXIS-00441 warning and P-AXIS-00442 err
   CHECK(events[1].parameter == "P-AXIS-00442");
   CHECK(events[1].axis == "X");
   monitor.check(0, events);
-  monitor.check(4500, events);  // a new excursion is reported again
-  CHECK(events.size() == 3);
+  monitor.check(4500, events);  // a new excursion past both: warning and error again
+  REQUIRE(events.size() == 4);
+  CHECK(events[2].parameter == "P-AXIS-00441");
+  CHECK(events[3].parameter == "P-AXIS-00442");
 }

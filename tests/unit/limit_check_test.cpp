@@ -70,3 +70,19 @@ TEST_CASE("RIG-4 limit check: a gap in the cycles restarts the differences", "[c
   checker.add_setpoint(0, 101, 5.0);
   CHECK(checker.finish().passed());
 }
+
+TEST_CASE("RIG-4 limit check: consecutive violating cycles are one episode with its worst value", "[check]") {
+  const MachineConfig m = test::xyz_machine();  // X: P-AXIS-00442 limit 4000
+  LimitChecker checker(m);
+  const double overload[] = {0, 4100, 4300, -4200, 0, 0, 4050, 0};  // two episodes
+  for (int64_t k = 0; k < 8; ++k) checker.add_actual(0, k, 0, overload[k], 0);
+  const CheckReport r = checker.finish();
+  REQUIRE(r.violations.size() == 2);
+  CHECK(r.violations[0].cycles == 3);
+  CHECK(r.violations[0].time_s == Approx(0.001));
+  CHECK(r.violations[0].end_time_s == Approx(0.003));
+  CHECK(r.violations[0].value == 4300);
+  CHECK(r.violations[0].worst_time_s == Approx(0.002));
+  CHECK(r.violations[1].cycles == 1);
+  CHECK(r.violations[1].value == 4050);
+}
