@@ -1,0 +1,7 @@
+#!/bin/sh
+# Sets up (packages, build) and runs the demo scenario through the whole rig
+# in a private network namespace; prints the report, leaves the run folder.
+set -eu
+cd "$(dirname "$0")"
+scripts/setup.sh
+exec scripts/in_netns.sh build/bin/hil run scenarios/demo.yaml "$@"
