@@ -53,7 +53,7 @@ struct Expectation {
 
 // An event that must (or, with count 0, must not) appear during the run.
 struct EventExpectation {
-  int32_t id = 0;
+  std::optional<int32_t> id;  // if set, only events with this TF5200 number count
   Severity severity = Severity::error;
   std::string parameter;  // if set, only events about this parameter ID count
   int64_t nc_line = 0;  // if > 0, only events from this NC program line count

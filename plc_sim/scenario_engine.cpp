@@ -82,14 +82,14 @@ std::vector<ExpectationResult> ScenarioEngine::finish() const {
     else results.push_back({"at " + p.expectation.when.describe(), false, " never reached"});
   }
   auto matches = [](const EventExpectation& x, const Event& e) {
-    return e.id == x.id && e.severity == x.severity && (x.nc_line == 0 || e.nc_line == x.nc_line) &&
+    return (!x.id || e.id == *x.id) && e.severity == x.severity && (x.nc_line == 0 || e.nc_line == x.nc_line) &&
            (x.parameter.empty() || e.parameter == x.parameter);
   };
   for (const EventExpectation& x : expected_events_) {
     int count = 0;
     for (const Event& e : seen_events_) count += matches(x, e) ? 1 : 0;
     ExpectationResult r;
-    r.what = std::string(x.absent ? "no " : "") + to_string(x.severity) + " " + std::to_string(x.id) +
+    r.what = std::string(x.absent ? "no " : "") + to_string(x.severity) + (x.id ? " " + std::to_string(*x.id) : "") +
              (x.parameter.empty() ? "" : " (" + x.parameter + ")") +
              (x.nc_line > 0 ? " on line " + std::to_string(x.nc_line) : "");
     r.passed = x.absent ? count == 0 : count >= x.count_min;

@@ -126,3 +126,33 @@ TEST_CASE("RIG-3 machine: P-AXIS-00441/00442 below 1000 (limit under a_max) are 
                     Catch::Contains("'kv' must be > 0"));
   CHECK_THROWS_WITH(parse_machine_config(YAML::Load("axes: []")), Catch::Contains("non-empty"));
 }
+
+TEST_CASE("RIG-5 scenario: expected events match by parameter, ID and NC line; absent ones must not appear",
+          "[scenario]") {
+  const Scenario s = scenario(R"(
+expect_events:
+  - {parameter: P-AXIS-00442, severity: error}
+  - {id: 0, severity: error, nc_line: 7}
+  - {id: 0, severity: error, nc_line: 8}
+  - {parameter: P-AXIS-00441, severity: warning, absent: true}
+)");
+  plc::ScenarioEngine engine(s);
+  Event overload;
+  overload.parameter = "P-AXIS-00442";
+  overload.id = 12345;  // a parameter-only expectation takes any number
+  engine.observe(overload);
+  Event decode;
+  decode.nc_line = 7;
+  engine.observe(decode);
+  Event warning;
+  warning.severity = Severity::warning;
+  warning.parameter = "P-AXIS-00441";
+  engine.observe(warning);
+  const auto results = engine.finish();
+  REQUIRE(results.size() == 4);  // both errors were expected: no "unexpected error" entry
+  CHECK(results[0].passed);
+  CHECK(results[1].passed);
+  CHECK_FALSE(results[2].passed);  // nothing on line 8
+  CHECK_FALSE(results[3].passed);  // the warning appeared although it must not
+  CHECK_THAT(results[3].what, Catch::Contains("no warning (P-AXIS-00441)"));
+}
