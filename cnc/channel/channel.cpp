@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "decoder.hpp"
-#include "rest_to_rest.hpp"
+#include "position_profile.hpp"
 
 namespace hil::cnc {
 

@@ -8,7 +8,7 @@
 #include "block.hpp"
 #include "event.hpp"
 #include "hli.hpp"
-#include "jerk_profile.hpp"
+#include "motion_profile.hpp"
 #include "machine_config.hpp"
 #include "path_segment.hpp"
 
@@ -40,7 +40,7 @@ class Channel {
   struct PlannedBlock {
     Block block;
     std::vector<PathSegment> segment;  // empty for a block without motion
-    JerkProfile profile;
+    MotionProfile profile;
     double t_begin = 0;          // s after program start
     double dist_before = 0;      // mm covered before this block
   };

@@ -6,7 +6,7 @@
 
 #include "block.hpp"
 #include "machine_config.hpp"
-#include "rest_to_rest.hpp"
+#include "slope.hpp"
 
 namespace hil::cnc {
 

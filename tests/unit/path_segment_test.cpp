@@ -8,6 +8,7 @@
 #include "decoder.hpp"
 #include "limit_check.hpp"
 #include "path_segment.hpp"
+#include "position_profile.hpp"
 #include "test_machine.hpp"
 
 using namespace hil;
@@ -19,7 +20,7 @@ namespace {
 logger::CheckReport sample(const PathSegment& seg, MachineConfig machine) {
   machine.cycle_time_us = 100;
   logger::LimitChecker checker(machine);
-  const JerkProfile profile = rest_to_rest(seg.length(), seg.limits());
+  const MotionProfile profile = rest_to_rest(seg.length(), seg.limits());
   const double dt = machine.cycle_time_s();
   const int64_t n = static_cast<int64_t>(std::ceil(profile.duration() / dt)) + 3;
   for (int64_t k = 0; k <= n; ++k) {

@@ -1,0 +1,63 @@
+#pragma once
+// A 1-D motion as a sequence of phases in which the acceleration moves
+// monotonically from one value to another (KRN-3). Each phase is a piece of
+// a linear ramp (constant jerk: TRAPEZ, or a STEP jump of zero duration) or
+// of a sin² ramp (SIN2). Evaluated in closed form at any time, so sampling
+// it at the cycle time is exact.
+#include <cstddef>
+#include <vector>
+
+namespace hil::cnc {
+
+struct MotionState {
+  double p = 0;  // position
+  double v = 0;  // velocity
+  double a = 0;  // acceleration
+  double j = 0;  // jerk at this instant (0 across a STEP jump)
+};
+
+struct Phase {
+  enum class Shape { linear, sin2 };
+  double duration = 0;  // 0 with a_end != start acceleration: a STEP jump
+  double a_end = 0;     // acceleration at the end of the phase
+  Shape shape = Shape::linear;
+  double jerk = 0;  // linear only; kept exact, not derived from tiny differences
+  // sin2 only: the phase is the part [u0, u0 + duration/ramp_time] of a
+  // whole ramp a(u) = base + ramp_delta_a * (u - sin(2 pi u) / 2 pi).
+  double ramp_time = 0;
+  double ramp_delta_a = 0;
+  double u0 = 0;
+};
+
+// State after `tau` (0 <= tau <= phase.duration) into `phase` begun in `s`.
+MotionState advance(const MotionState& s, const Phase& phase, double tau);
+
+// Builders of the phases the planners use.
+Phase hold(double duration, double a);                       // constant acceleration
+Phase linear_ramp(double a_from, double a_to, double jerk);  // jerk > 0, or infinite for a jump
+Phase sin2_ramp(double a_from, double a_to, double peak_jerk);
+
+class MotionProfile {
+ public:
+  MotionProfile() = default;
+  MotionProfile(MotionState start, std::vector<Phase> phases);
+
+  double duration() const { return duration_; }
+  MotionState start() const { return start_; }
+  MotionState end() const { return end_; }
+  // State at time t, clamped to [0, duration()].
+  MotionState at(double t) const;
+  const std::vector<Phase>& phases() const { return phases_; }
+  // State at the start of phase i (i == phases().size(): the end).
+  MotionState phase_start(std::size_t i) const { return i < starts_.size() ? starts_[i] : end_; }
+  double phase_start_time(std::size_t i) const { return i < times_.size() ? times_[i] : duration_; }
+
+ private:
+  std::vector<Phase> phases_;
+  std::vector<MotionState> starts_;
+  std::vector<double> times_;
+  MotionState start_, end_;
+  double duration_ = 0;
+};
+
+}  // namespace hil::cnc

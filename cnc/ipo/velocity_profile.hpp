@@ -1,0 +1,33 @@
+#pragma once
+// Time-optimal change of velocity under acceleration and jerk limits
+// (KRN-3): from any (v, a) to a target velocity with acceleration 0. The
+// velocity-target mode for feed hold, override and stop, and the building
+// block of the position planner.
+#include <array>
+
+#include "motion_profile.hpp"
+#include "slope.hpp"
+
+namespace hil::cnc {
+
+// Ramp to a plateau (SIN2: via a = 0), hold it, ramp back to 0.
+struct VelocityChange {
+  std::array<Phase, 4> phases{};
+  int count = 0;
+  double duration() const;
+  // State at the end, begun in `s`.
+  MotionState end(const MotionState& s) const;
+  // Appends the phases to `out`.
+  void append_to(std::vector<Phase>& out) const;
+};
+
+// From (v, a) to (v_target, 0), fastest under lim.a and lim.j for the slope
+// type. An |a| above lim.a is first brought back at full jerk (the
+// velocity overshoot this implies cannot be avoided). lim.v is not applied
+// here: the caller chooses v_target.
+VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope);
+
+// The velocity-target mode: v_target is clamped to [-lim.v, lim.v].
+MotionProfile velocity_profile(const MotionState& start, double v_target, const Limits& lim, SlopeType slope);
+
+}  // namespace hil::cnc
