@@ -78,6 +78,7 @@ class Planner {
   // opposite signs): Illinois regula falsi with bisection steps.
   double find_switch(double f0, double f1) const {
     double lo = 0, hi = drive_.duration();
+    double f_lo = f0, f_hi = f1;  // the true values; f0 and f1 get halved
     int side = 0;
     for (int iteration = 0; iteration < 200; ++iteration) {
       double t = (iteration % 4 == 3) ? (lo + hi) / 2 : (lo * f1 - hi * f0) / (f1 - f0);
@@ -87,17 +88,16 @@ class Planner {
       if (f == 0) return t;
       if ((f > 0) == (f1 > 0)) {
         hi = t;
-        f1 = f;
+        f_hi = f1 = f;
         if (side == 1) f0 /= 2;
         side = 1;
       } else {
         lo = t;
-        f0 = f;
+        f_lo = f0 = f;
         if (side == -1) f1 /= 2;
         side = -1;
       }
     }
-    const double f_lo = overshoot(driven_for(lo)), f_hi = overshoot(driven_for(hi));
     return std::abs(f_lo) <= std::abs(f_hi) ? lo : hi;
   }
 

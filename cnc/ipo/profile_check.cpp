@@ -54,10 +54,9 @@ bool meets(const MotionProfile& profile, double target, const Limits& lim, Slope
     return false;
   // Outside the limits at the start the profile may only come back; an
   // acceleration that still drives |v| up adds a|a|/2 per ramp rate.
-  const double rate = slope == SlopeType::step ? HUGE_VAL : slope == SlopeType::sin2 ? lim.j / 2 : lim.j;
   const double a_allowed = std::max(lim.a, std::abs(start.a));
   const double v_allowed =
-      std::max({lim.v, std::abs(start.v), std::abs(start.v + start.a * std::abs(start.a) / (2 * rate))});
+      std::max({lim.v, std::abs(start.v), std::abs(velocity_after_ramp_to_zero(start.v, start.a, lim, slope))});
   if (x.max_v > v_allowed * (1 + relative)) return false;
   if (x.max_a > a_allowed * (1 + relative)) return false;
   if (slope != SlopeType::step && x.max_j > lim.j * (1 + relative)) return false;

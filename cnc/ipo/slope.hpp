@@ -21,4 +21,11 @@ struct Limits {
   double j = 0;
 };
 
+// Mean jerk over a ramp of the slope type (infinite for STEP): a ramp of da
+// takes |da| / rate and changes the velocity by (a_from + a_to) |da| / (2 rate).
+double ramp_rate(const Limits& lim, SlopeType slope);
+
+// The velocity reached when the acceleration a ramps straight to 0.
+double velocity_after_ramp_to_zero(double v, double a, const Limits& lim, SlopeType slope);
+
 }  // namespace hil::cnc

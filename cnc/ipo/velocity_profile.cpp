@@ -7,17 +7,6 @@
 namespace hil::cnc {
 namespace {
 
-// Mean jerk over a ramp: a ramp of da takes |da| / rate and changes the
-// velocity by (a_from + a_to) |da| / (2 rate).
-double ramp_rate(const Limits& lim, SlopeType slope) {
-  switch (slope) {
-    case SlopeType::step: return std::numeric_limits<double>::infinity();
-    case SlopeType::trapez: return lim.j;
-    case SlopeType::sin2: return lim.j / 2;  // a sin² pulse of peak j averages j/2
-  }
-  return lim.j;
-}
-
 Phase ramp(double a_from, double a_to, const Limits& lim, SlopeType slope) {
   if (slope == SlopeType::sin2 && a_to != a_from) return sin2_ramp(a_from, a_to, lim.j);
   return linear_ramp(a_from, a_to, slope == SlopeType::step ? std::numeric_limits<double>::infinity() : lim.j);
@@ -44,7 +33,7 @@ void VelocityChange::append_to(std::vector<Phase>& out) const {
 VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope) {
   const double rate = ramp_rate(lim, slope);
   // Solve the rising case; a falling change is its mirror image.
-  const double v_ramp_down = std::isinf(rate) ? v : v + a * std::abs(a) / (2 * rate);
+  const double v_ramp_down = velocity_after_ramp_to_zero(v, a, lim, slope);
   VelocityChange change;
   // Ramping straight to a = 0 lands on v_target to round-off: any plateau
   // found beyond that would be the square root of noise.

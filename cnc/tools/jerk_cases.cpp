@@ -11,7 +11,6 @@
 #include <iostream>
 #include <sstream>
 #include <string>
-#include <vector>
 
 #include "position_profile.hpp"
 #include "profile_check.hpp"

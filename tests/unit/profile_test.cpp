@@ -62,10 +62,9 @@ struct Tally {
 // acceleration to 0 at once keeps |v| <= v_max.
 MotionState random_feasible_state(std::mt19937_64& rng, const Limits& lim, SlopeType slope) {
   std::uniform_real_distribution<double> u(-1, 1);
-  const double rate = slope == SlopeType::sin2 ? lim.j / 2 : lim.j;
   for (;;) {
     const MotionState s{0.02 * u(rng), lim.v * u(rng), lim.a * u(rng), 0};
-    if (slope == SlopeType::step || std::abs(s.v + s.a * std::abs(s.a) / (2 * rate)) <= lim.v) return s;
+    if (std::abs(velocity_after_ramp_to_zero(s.v, s.a, lim, slope)) <= lim.v) return s;
   }
 }
 
