@@ -17,6 +17,9 @@ bool parse_channel_state(const std::string& text, ChannelState& state);
 // HLI_SC_* bits of stop_conditions_r (TF5200_insert_stop_cmd.txt, table of
 // stop conditions); only the ones the channel sets so far.
 namespace stop_condition {
+constexpr int32_t feedhold = 0x0001;          // HLI_SC_FEEDHOLD
+constexpr int32_t override_zero = 0x0040;     // HLI_SC_OVERRIDE_ZERO
+constexpr int32_t override_rapid_zero = 0x0080;  // HLI_SC_OVERRIDE_RAPID_ZERO
 constexpr int32_t ipo_input_empty = 0x1000;   // HLI_SC_IPO_INPUT_EMPTY
 constexpr int32_t channel_error = 0x00010000;  // HLI_SC_CHANNEL_ERROR
 }  // namespace stop_condition
@@ -31,9 +34,24 @@ struct ControlUnitState {
   bool state_r = false;
 };
 
+struct ControlUnitValue {
+  int32_t command_w = 0;
+  bool enable_w = false;
+};
+
+struct ControlUnitValueState {
+  bool request_r = false;
+  int32_t state_r = 0;
+};
+
+// Override values are in 0.1 % (1000 = 100 %).
+constexpr int32_t override_full = 1000;
+
 struct HliControl {
   int64_t cycle = -1;  // the HLI_STATE cycle this answers
   ControlUnitBool program_start;
+  ControlUnitBool feedhold;
+  ControlUnitValue override;
 };
 
 struct HliState {
@@ -48,6 +66,8 @@ struct HliState {
   std::vector<std::string> axis_name;
   std::vector<int64_t> axis_position_r;  // 0.1 um
   ControlUnitState program_start;
+  ControlUnitState feedhold;
+  ControlUnitValueState override;
 };
 
 // HLI length unit: 0.1 um.

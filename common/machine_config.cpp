@@ -67,6 +67,9 @@ MachineConfig parse_machine_config(const YAML::Node& node) {
     if (node["cycle_time_us"]) config.cycle_time_us = node["cycle_time_us"].as<int32_t>();
     if (config.cycle_time_us < 100 || config.cycle_time_us > 100000)
       throw ConfigError("machine: cycle_time_us must be within 100 .. 100000");
+    if (node["override_max_percent"]) config.override_max_percent = node["override_max_percent"].as<int32_t>();
+    if (config.override_max_percent < 100 || config.override_max_percent > 200)
+      throw ConfigError("machine: override_max_percent must be within 100 .. 200");
     const YAML::Node axes = node["axes"];
     if (!axes || !axes.IsSequence() || axes.size() == 0)
       throw ConfigError("machine: 'axes' must be a non-empty list");

@@ -30,6 +30,8 @@ struct AxisConfig {
 struct MachineConfig {
   std::string name;
   int32_t cycle_time_us = 1000;
+  // Highest feed override the PLC may set, in %; above 100 only if configured.
+  int32_t override_max_percent = 100;
   std::vector<AxisConfig> axes;
 
   double cycle_time_s() const { return cycle_time_us * 1e-6; }

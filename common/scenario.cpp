@@ -49,6 +49,16 @@ Condition parse_condition(const YAML::Node& node, const std::string& where) {
   return c;
 }
 
+// true / false, or a whole number (override in 0.1 %).
+int32_t control_value(const YAML::Node& node, const std::string& where) {
+  bool flag = false;
+  if (YAML::convert<bool>::decode(node, flag)) return flag ? 1 : 0;
+  int32_t value = 0;
+  if (YAML::convert<int32_t>::decode(node, value)) return value;
+  throw ConfigError(where + ": a control unit field takes true, false or a whole number, not '" +
+                    node.as<std::string>() + "'");
+}
+
 TimelineStep parse_step(const YAML::Node& node, const std::string& where) {
   TimelineStep step;
   if (!node["when"]) throw ConfigError(where + ": 'when' is missing");
@@ -56,7 +66,7 @@ TimelineStep parse_step(const YAML::Node& node, const std::string& where) {
   const YAML::Node set = node["set"];
   if (!set || !set.IsMap()) throw ConfigError(where + ": 'set' must map control unit fields to values");
   for (const auto& item : set)
-    step.set.push_back({item.first.as<std::string>(), item.second.as<bool>()});
+    step.set.push_back({item.first.as<std::string>(), control_value(item.second, where)});
   return step;
 }
 

@@ -29,10 +29,11 @@ struct Condition {
   std::string describe() const;
 };
 
-// One write to a control unit field, e.g. "program_start.command_w": true.
+// One write to a control unit field, e.g. "program_start.command_w": true
+// or "override.command_w": 500 (true / false are 1 / 0).
 struct ControlWrite {
   std::string field;
-  bool value = false;
+  int32_t value = 0;
 };
 
 struct TimelineStep {

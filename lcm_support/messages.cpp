@@ -40,6 +40,10 @@ hil::hli_state_t to_message(const HliState& s, int64_t utime) {
   m.axis_position_r = s.axis_position_r;
   m.program_start.request_r = s.program_start.request_r;
   m.program_start.state_r = s.program_start.state_r;
+  m.feedhold.request_r = s.feedhold.request_r;
+  m.feedhold.state_r = s.feedhold.state_r;
+  m.override.request_r = s.override.request_r;
+  m.override.state_r = s.override.state_r;
   return m;
 }
 
@@ -57,6 +61,10 @@ HliState from_message(const hil::hli_state_t& m) {
   s.axis_position_r = m.axis_position_r;
   s.program_start.request_r = m.program_start.request_r;
   s.program_start.state_r = m.program_start.state_r;
+  s.feedhold.request_r = m.feedhold.request_r;
+  s.feedhold.state_r = m.feedhold.state_r;
+  s.override.request_r = m.override.request_r;
+  s.override.state_r = m.override.state_r;
   return s;
 }
 
@@ -66,6 +74,10 @@ hil::hli_control_t to_message(const HliControl& c, int64_t utime) {
   m.cycle = c.cycle;
   m.program_start.command_w = c.program_start.command_w;
   m.program_start.enable_w = c.program_start.enable_w;
+  m.feedhold.command_w = c.feedhold.command_w;
+  m.feedhold.enable_w = c.feedhold.enable_w;
+  m.override.command_w = c.override.command_w;
+  m.override.enable_w = c.override.enable_w;
   return m;
 }
 
@@ -74,6 +86,10 @@ HliControl from_message(const hil::hli_control_t& m) {
   c.cycle = m.cycle;
   c.program_start.command_w = m.program_start.command_w;
   c.program_start.enable_w = m.program_start.enable_w;
+  c.feedhold.command_w = m.feedhold.command_w;
+  c.feedhold.enable_w = m.feedhold.enable_w;
+  c.override.command_w = m.override.command_w;
+  c.override.enable_w = m.override.enable_w;
   return c;
 }
 

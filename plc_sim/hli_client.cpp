@@ -6,25 +6,47 @@ namespace hil::plc {
 namespace {
 
 // The control units the CNC implements, by their TF5200 names.
-const std::vector<std::pair<std::string, ControlUnitBool HliControl::*>> units = {
+const std::vector<std::pair<std::string, ControlUnitBool HliControl::*>> bool_units = {
     {"program_start", &HliControl::program_start},
+    {"feedhold", &HliControl::feedhold},
 };
+const std::vector<std::pair<std::string, ControlUnitValue HliControl::*>> value_units = {
+    {"override", &HliControl::override},
+};
+
+bool write_bool(bool& field, int32_t value) {
+  if (value != 0 && value != 1) return false;
+  field = value != 0;
+  return true;
+}
 
 }  // namespace
 
-bool* control_field(HliControl& control, const std::string& name) {
-  for (const auto& [unit_name, member] : units) {
+bool write_control_field(HliControl& control, const std::string& name, int32_t value) {
+  for (const auto& [unit_name, member] : bool_units) {
     ControlUnitBool& unit = control.*member;
-    if (name == unit_name + ".command_w") return &unit.command_w;
-    if (name == unit_name + ".enable_w") return &unit.enable_w;
+    if (name == unit_name + ".command_w") return write_bool(unit.command_w, value);
+    if (name == unit_name + ".enable_w") return write_bool(unit.enable_w, value);
   }
-  return nullptr;
+  for (const auto& [unit_name, member] : value_units) {
+    ControlUnitValue& unit = control.*member;
+    if (name == unit_name + ".command_w") {
+      unit.command_w = value;
+      return true;
+    }
+    if (name == unit_name + ".enable_w") return write_bool(unit.enable_w, value);
+  }
+  return false;
 }
 
 std::vector<std::string> control_field_names() {
   std::vector<std::string> names;
-  for (const auto& unit : units) {
+  for (const auto& unit : bool_units) {
     names.push_back(unit.first + ".command_w");
+    names.push_back(unit.first + ".enable_w");
+  }
+  for (const auto& unit : value_units) {
+    names.push_back(unit.first + ".command_w (0.1 %)");
     names.push_back(unit.first + ".enable_w");
   }
   return names;

@@ -13,13 +13,18 @@ ScenarioEngine::ScenarioEngine(const Scenario& scenario)
       expected_events_(scenario.expected_events), allow_errors_(scenario.allow_errors),
       cycle_time_s_(scenario.machine.cycle_time_s()) {
   for (size_t i = 0; i < timeline_.size(); ++i)
-    for (const ControlWrite& write : timeline_[i].set)
-      if (!control_field(control_, write.field)) {
+    for (const ControlWrite& write : timeline_[i].set) {
+      const std::string where = "plc.timeline[" + std::to_string(i) + "]: ";
+      HliControl probe;
+      if (!write_control_field(probe, write.field, 0)) {  // every field takes 0
         std::string known;
-        for (const auto& name : control_field_names()) known += " " + name;
-        throw ConfigError("plc.timeline[" + std::to_string(i) + "]: unknown HLI field '" +
-                          write.field + "' (known:" + known + ")");
+        for (const auto& name : control_field_names()) known += ", " + name;
+        throw ConfigError(where + "unknown HLI field '" + write.field + "' (known: " + known.substr(2) + ")");
       }
+      if (!write_control_field(probe, write.field, write.value))
+        throw ConfigError(where + "HLI field '" + write.field + "' is boolean: true or false, not " +
+                          std::to_string(write.value));
+    }
   for (const Expectation& e : scenario.expectations) pending_.push_back({e, false, {}});
 }
 
@@ -28,7 +33,7 @@ const HliControl& ScenarioEngine::cycle(const HliState& state) {
   for (size_t i = 0; i < timeline_.size(); ++i) {
     if (fired_[i] || !timeline_[i].when.holds(state, cycle_time_s_)) continue;
     fired_[i] = true;
-    for (const ControlWrite& write : timeline_[i].set) *control_field(control_, write.field) = write.value;
+    for (const ControlWrite& write : timeline_[i].set) write_control_field(control_, write.field, write.value);
   }
   for (Pending& p : pending_) {
     if (p.reached || !p.expectation.when.holds(state, cycle_time_s_)) continue;

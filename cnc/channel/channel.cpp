@@ -1,5 +1,6 @@
 #include "channel.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "decoder.hpp"
@@ -8,11 +9,12 @@
 namespace hil::cnc {
 
 Channel::Channel(MachineConfig machine, std::string nc_program)
-    : machine_(std::move(machine)), nc_program_(std::move(nc_program)),
-      setpoints_(machine_.axes.size()) {
+    : machine_(std::move(machine)), nc_program_(std::move(nc_program)), setpoints_(machine_.axes.size()),
+      look_ahead_(machine_) {
   for (const AxisConfig& axis : machine_.axes) hli_.axis_name.push_back(axis.name);
   hli_.axis_position_r.assign(machine_.axes.size(), 0);
   hli_.stop_conditions_r = stop_condition::ipo_input_empty;
+  hli_.override.state_r = override_full;
 }
 
 std::vector<Event> Channel::take_events() {
@@ -33,20 +35,22 @@ void Channel::raise(Event event) {
 void Channel::step(int64_t cycle, const HliControl& control) {
   cycle_ = cycle;
   hli_.cycle = cycle;
-  apply_control(control);
+  apply_velocity_control(control);
+  apply_program_start(control.program_start);
   if (hli_.channel_state == ChannelState::active)
     interpolate(static_cast<double>(cycle - start_cycle_) * machine_.cycle_time_s());
   for (size_t i = 0; i < setpoints_.size(); ++i)
     hli_.axis_position_r[i] = std::llround(setpoints_[i].position * hli_units_per_mm);
   hli_.program_start.state_r = hli_.channel_state == ChannelState::active;
   hli_.stop_conditions_r = 0;
+  if (hli_.feedhold.state_r) hli_.stop_conditions_r |= stop_condition::feedhold;
+  if (hli_.override.state_r == 0) hli_.stop_conditions_r |= stop_condition::override_zero;
   if (hli_.channel_state == ChannelState::error) hli_.stop_conditions_r |= stop_condition::channel_error;
   if (hli_.channel_state != ChannelState::active) hli_.stop_conditions_r |= stop_condition::ipo_input_empty;
 }
 
 // Control units act on the rising edge of command_w while enable_w (KRN-4).
-void Channel::apply_control(const HliControl& control) {
-  const ControlUnitBool& start = control.program_start;
+void Channel::apply_program_start(const ControlUnitBool& start) {
   hli_.program_start.request_r = start.command_w && start.enable_w;
   const bool rising = start.command_w && !previous_start_command_;
   previous_start_command_ = start.command_w;
@@ -61,6 +65,35 @@ void Channel::apply_control(const HliControl& control) {
   start_program();
 }
 
+// Feed hold and override are levels, not edges: they act while they are
+// set, and the path is replanned from where it is (KRN-3).
+void Channel::apply_velocity_control(const HliControl& control) {
+  hli_.feedhold.request_r = control.feedhold.command_w && control.feedhold.enable_w;
+  hli_.override.request_r = control.override.enable_w;
+  int32_t value = control.override.enable_w ? control.override.command_w : override_full;
+  const int32_t highest = machine_.override_max_percent * 10;
+  if (value < 0 || value > highest) {
+    if (value != previous_override_command_) {
+      Event clamped;
+      clamped.severity = Severity::warning;
+      clamped.value = value / 10.0;
+      clamped.limit = value < 0 ? 0 : highest / 10.0;
+      clamped.message = "override " + std::to_string(value / 10.0) + " % is outside 0 .. " +
+                        std::to_string(machine_.override_max_percent) + " % (override_max_percent); using " +
+                        std::to_string(clamped.limit) + " %";
+      raise(clamped);
+    }
+  }
+  previous_override_command_ = value;
+  value = std::clamp(value, 0, highest);
+  const bool hold = hli_.feedhold.request_r;
+  if (hold == hli_.feedhold.state_r && value == hli_.override.state_r) return;
+  hli_.feedhold.state_r = hold;
+  hli_.override.state_r = value;
+  look_ahead_.set_velocity_factor(hold ? 0.0 : value / static_cast<double>(override_full));
+  replan_ = true;
+}
+
 void Channel::start_program() {
   std::vector<double> start(setpoints_.size());
   for (size_t i = 0; i < start.size(); ++i) start[i] = setpoints_[i].position;
@@ -69,57 +102,116 @@ void Channel::start_program() {
     decode_failed_ = true;
     raise(*program.error);  // reported at once; the blocks before it still run
   }
-  double t = 0, dist = 0;
-  for (Block& block : program.blocks) {
-    PlannedBlock planned;
-    planned.t_begin = t;
-    planned.dist_before = dist;
-    if (block.has_motion) {
-      planned.segment.emplace_back(block.motion, machine_);
-      const PathSegment& seg = planned.segment.front();
-      planned.profile = rest_to_rest(seg.length(), seg.limits());
-      t += planned.profile.duration();
-      dist += seg.length();
-    }
-    planned.block = std::move(block);
-    planned_.push_back(std::move(planned));
-  }
+  blocks_ = std::move(program.blocks);
   start_cycle_ = cycle_;
-  current_ = 0;
   hli_.channel_state = ChannelState::active;
+  dps_counting_ = true;  // ON and CLEAR are the defaults at program start (DPS-2)
+  dps_before_front_ = 0;
+  refill_look_ahead();
+  if (!look_ahead_.empty()) begin_front({}, 0);
+  replan_ = false;
   interpolate(0);
 }
 
-void Channel::interpolate(double t) {
-  while (current_ < planned_.size() &&
-         t >= planned_[current_].t_begin + planned_[current_].profile.duration()) {
-    // Leave the block exactly on its programmed end point.
-    const PlannedBlock& done = planned_[current_];
-    if (!done.segment.empty()) {
-      const std::vector<double>& end = done.segment.front().end();
-      for (size_t i = 0; i < setpoints_.size(); ++i) setpoints_[i] = {end[i], 0, 0};
-      hli_.dist_prog_start = (done.dist_before + done.segment.front().length()) * hli_units_per_mm;
-    }
-    hli_.block_nr_r = done.block.block_nr;
-    hli_.block_count_r = done.block.nc_line;
-    hli_.path_velocity = 0;
-    ++current_;
+void Channel::refill_look_ahead() {
+  for (; !look_ahead_.full() && next_to_look_ahead_ < blocks_.size(); ++next_to_look_ahead_) {
+    const Block& block = blocks_[next_to_look_ahead_];
+    if (block.has_motion) look_ahead_.push(next_to_look_ahead_, PathSegment(block.motion, machine_), block.slope);
   }
-  if (current_ >= planned_.size()) {
+}
+
+void Channel::begin_front(const MotionState& state, double t0) {
+  const LookAheadBlock& front = look_ahead_.front();
+  run_blocks_without_motion(front.block_index);
+  const Block& block = blocks_[front.block_index];
+  hli_.block_nr_r = block.block_nr;
+  hli_.block_count_r = block.nc_line;
+  plan(state, t0);
+}
+
+// Replanning from a state on the plan continues it (the planner is
+// time-optimal, so its tail is too); it is done at every block transition,
+// where the look-ahead has seen one block more, and when override or feed
+// hold change.
+void Channel::plan(const MotionState& state, double t0) {
+  const Stretch st = look_ahead_.stretch(state.v);
+  plan_ = block_profile(state, st.length, st.v_end, st.lim, st.slope);
+  plan_start_ = t0;
+}
+
+void Channel::finish_front() {
+  const LookAheadBlock& front = look_ahead_.front();
+  if (dps_counting_) dps_before_front_ += front.segment.covered_distance();
+  next_to_run_ = front.block_index + 1;
+  look_ahead_.pop_front();
+  refill_look_ahead();
+}
+
+// #DISTANCE PROG START and M30 act when the interpolator reaches them.
+void Channel::run_blocks_without_motion(size_t up_to) {
+  for (; next_to_run_ < up_to; ++next_to_run_) {
+    const Block& block = blocks_[next_to_run_];
+    hli_.block_nr_r = block.block_nr;
+    hli_.block_count_r = block.nc_line;
+    if (!block.distance_prog_start) continue;
+    switch (*block.distance_prog_start) {
+      case DistanceProgStart::on: dps_counting_ = true; break;
+      case DistanceProgStart::off: dps_counting_ = false; break;
+      case DistanceProgStart::clear: dps_before_front_ = 0; break;
+    }
+  }
+}
+
+MotionState Channel::path_state_at(double t) const { return plan_.at(t - plan_start_); }
+
+void Channel::interpolate(double t) {
+  if (!look_ahead_.empty() && replan_) plan(path_state_at(t), t);
+  replan_ = false;
+  MotionState path = path_state_at(t);
+  // Pass every block the path has left by t; a plan that ends short of the
+  // block end (feed hold, override 0) waits there.
+  while (!look_ahead_.empty()) {
+    const double length = look_ahead_.front().segment.length();
+    const bool plan_ended = t - plan_start_ >= plan_.duration();
+    if (path.p < length && !(plan_ended && path.p >= length - 1e-9 * (1 + length))) break;
+    const std::vector<double> end_point = look_ahead_.front().segment.end();
+    finish_front();
+    if (look_ahead_.empty()) {
+      // Leave the last block exactly on its programmed end point.
+      for (size_t i = 0; i < setpoints_.size(); ++i) setpoints_[i] = {end_point[i], 0, 0};
+      break;
+    }
+    // Go on from where the path left the block: at t, or where a plan that
+    // ended on the block end (a limiting transition) ended.
+    double t_from = t;
+    if (plan_ended) {
+      t_from = plan_start_ + plan_.duration();
+      path = plan_.end();
+    }
+    path.p -= length;
+    begin_front(path, t_from);
+    path = path_state_at(t);
+  }
+  if (look_ahead_.empty()) {
     // Every block decoded correctly has run; a decode error now stops the channel.
+    run_blocks_without_motion(blocks_.size());
+    hli_.dist_prog_start = dps_before_front_ * hli_units_per_mm;
+    hli_.path_velocity = 0;
     hli_.channel_state = decode_failed_ ? ChannelState::error : ChannelState::program_end;
     return;
   }
-  const PlannedBlock& block = planned_[current_];
-  hli_.block_nr_r = block.block.block_nr;
-  hli_.block_count_r = block.block.nc_line;
-  const PathSegment& seg = block.segment.front();
-  const MotionState path = block.profile.at(t - block.t_begin);
-  const double s = std::min(std::max(path.p, 0.0), seg.length());
+  if (t - plan_start_ >= plan_.duration()) path.v = path.a = 0;  // held short of the block end
+  output(path);
+}
+
+void Channel::output(const MotionState& path) {
+  const PathSegment& seg = look_ahead_.front().segment;
+  const double s = std::clamp(path.p, 0.0, seg.length());
   const std::vector<double> p = seg.position(s), d1 = seg.tangent(s), d2 = seg.curvature(s);
   for (size_t i = 0; i < setpoints_.size(); ++i)
     setpoints_[i] = {p[i], d1[i] * path.v, d1[i] * path.a + d2[i] * path.v * path.v};
-  hli_.dist_prog_start = (block.dist_before + s) * hli_units_per_mm;
+  const double covered = dps_counting_ ? seg.covered_distance() * s / seg.length() : 0.0;
+  hli_.dist_prog_start = (dps_before_front_ + covered) * hli_units_per_mm;
   hli_.path_velocity = path.v;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// The CNC channel: HLI semantics, program start, and interpolation of the
-// decoded program at the cycle time. One call of step() is one cycle.
+// The CNC channel: HLI semantics, program start, feed hold and override,
+// and interpolation of the decoded program at the cycle time along the
+// path planned by the look-ahead (KRN-3). One call of step() is one cycle.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -8,9 +9,9 @@
 #include "block.hpp"
 #include "event.hpp"
 #include "hli.hpp"
-#include "motion_profile.hpp"
+#include "look_ahead.hpp"
 #include "machine_config.hpp"
-#include "path_segment.hpp"
+#include "motion_profile.hpp"
 
 namespace hil::cnc {
 
@@ -23,6 +24,8 @@ struct AxisSetpoint {
 class Channel {
  public:
   Channel(MachineConfig machine, std::string nc_program);
+  Channel(const Channel&) = delete;  // the look-ahead refers to machine_
+  Channel& operator=(const Channel&) = delete;
 
   // Interpolates cycle `cycle`, after applying the PLC's control written in
   // answer to the previous cycle (lock-step, RIG-6).
@@ -36,30 +39,40 @@ class Channel {
   bool finished() const;
 
  private:
-  // A decoded block placed on the time line of the running program.
-  struct PlannedBlock {
-    Block block;
-    std::vector<PathSegment> segment;  // empty for a block without motion
-    MotionProfile profile;
-    double t_begin = 0;          // s after program start
-    double dist_before = 0;      // mm covered before this block
-  };
-
-  void apply_control(const HliControl& control);
+  void apply_program_start(const ControlUnitBool& start);
+  void apply_velocity_control(const HliControl& control);
   void start_program();
+  void refill_look_ahead();
+  // Makes the look-ahead's front block the one in the interpolator, after
+  // running the blocks without motion before it, and plans from `state`
+  // (path position within the block) at time t0.
+  void begin_front(const MotionState& state, double t0);
+  void plan(const MotionState& state, double t0);
+  void finish_front();
+  void run_blocks_without_motion(size_t up_to);
   void interpolate(double t);
+  MotionState path_state_at(double t) const;
+  void output(const MotionState& path);
   void raise(Event event);
 
   MachineConfig machine_;
   std::string nc_program_;
   HliState hli_;
   std::vector<AxisSetpoint> setpoints_;
-  std::vector<PlannedBlock> planned_;
+  std::vector<Block> blocks_;  // the decoded program
   bool decode_failed_ = false;
+  LookAhead look_ahead_;
+  size_t next_to_look_ahead_ = 0;  // next block of blocks_ to enter the look-ahead
+  size_t next_to_run_ = 0;         // next block of blocks_ the interpolator reaches
+  MotionProfile plan_;             // of the stretch from the front block on; p = 0 at its start
+  double plan_start_ = 0;          // s after program start
+  bool replan_ = false;            // override or feed hold changed
+  bool dps_counting_ = true;       // #DISTANCE PROG START ON (DPS-2)
+  double dps_before_front_ = 0;    // mm counted before the front block
   int64_t start_cycle_ = 0;
   int64_t cycle_ = 0;
-  size_t current_ = 0;
   bool previous_start_command_ = false;
+  int32_t previous_override_command_ = override_full;
   std::vector<Event> events_;
 };
 

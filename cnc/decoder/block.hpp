@@ -2,7 +2,10 @@
 // What the decoder hands on: one entry per NC program line that commands
 // something (KRN-1). Positions are absolute, in machine axis order, mm.
 #include <cstdint>
+#include <optional>
 #include <vector>
+
+#include "slope.hpp"
 
 namespace hil::cnc {
 
@@ -17,11 +20,16 @@ struct Motion {
   double feed = 0;            // mm/s (programmed F is mm/min); 0 for G00
 };
 
+// #DISTANCE PROG START ON / OFF (modal) / CLEAR (DPS-2).
+enum class DistanceProgStart { on, off, clear };
+
 struct Block {
   int64_t nc_line = 0;   // 1-based line of the NC program
   int64_t block_nr = 0;  // N number, 0 if the line has none
   bool has_motion = false;
   Motion motion;
+  SlopeType slope = SlopeType::trapez;  // #SLOPE[TYPE=..] in force for the motion
+  std::optional<DistanceProgStart> distance_prog_start;
   bool program_end = false;  // M30
 };
 

@@ -1,5 +1,6 @@
 #include "decoder.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -84,7 +85,18 @@ struct ModalState {
   MotionType motion = MotionType::linear;
   bool absolute = true;   // G90
   double feed = 0;        // mm/s
+  SlopeType slope = SlopeType::trapez;
 };
+
+std::string upper_words(const std::string& text) {
+  std::istringstream in(text);
+  std::string word, out;
+  while (in >> word) {
+    for (char& c : word) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    out += (out.empty() ? "" : " ") + word;
+  }
+  return out;
+}
 
 class LineDecoder {
  public:
@@ -97,14 +109,26 @@ class LineDecoder {
     const size_t first = code.find_first_not_of(" \t\r");
     if (first == std::string::npos) return true;
     if (code[first] == '%') return true;  // program name
-    const std::vector<Word> words = split_words(code);
-
     Block block;
     block.nc_line = line_nr;
+    const size_t hash = code.find('#');
+    if (hash != std::string::npos) {
+      // A '#' command is the whole block, after an optional N number.
+      const std::vector<Word> before = split_words(code.substr(0, hash));
+      if (before.size() > 1 || (before.size() == 1 && before[0].letter != 'N'))
+        throw LineError{"a '#' command must stand alone in its block (after the N number)"};
+      if (!before.empty()) block.block_nr = integer_code(before[0]);
+      decode_command(upper_words(code.substr(hash)), block);
+      if (block.distance_prog_start) out.push_back(block);
+      return true;
+    }
+    const std::vector<Word> words = split_words(code);
+
     std::vector<std::optional<double>> axis_words(machine_.axes.size());
     std::optional<double> i_word, j_word;
     std::optional<MotionType> motion;
     bool seen_motion_word = false;
+    bool set_offset = false;  // G92: the axis words name the current position
 
     for (size_t k = 0; k < words.size(); ++k) {
       const Word& w = words[k];
@@ -123,6 +147,8 @@ class LineDecoder {
             modal_.absolute = true;
           } else if (g == 91) {
             modal_.absolute = false;
+          } else if (g == 92) {
+            set_offset = true;
           } else {
             throw LineError{"G code '" + w.text + "' is not supported yet"};
           }
@@ -146,14 +172,20 @@ class LineDecoder {
         }
       }
     }
+    if (set_offset) {
+      if (seen_motion_word || i_word || j_word) throw LineError{"G92 must not be combined with motion"};
+      for (size_t a = 0; a < axis_words.size(); ++a)
+        if (axis_words[a]) offset_[a] = position_[a] - *axis_words[a];
+      return true;
+    }
     if (motion) modal_.motion = *motion;
 
     bool moves = false;
     std::vector<double> target = position_;
     for (size_t a = 0; a < axis_words.size(); ++a) {
       if (!axis_words[a]) continue;
-      target[a] = modal_.absolute ? *axis_words[a] : position_[a] + *axis_words[a];
-      moves = true;
+      target[a] = modal_.absolute ? *axis_words[a] + offset_[a] : position_[a] + *axis_words[a];
+      moves = moves || target[a] != position_[a];
     }
     const bool is_arc = modal_.motion == MotionType::arc_cw || modal_.motion == MotionType::arc_ccw;
     if ((i_word || j_word) && !is_arc) throw LineError{"I/J are only allowed with G02/G03"};
@@ -165,6 +197,7 @@ class LineDecoder {
       m.type = modal_.motion;
       m.start = position_;
       m.end = target;
+      block.slope = modal_.slope;
       if (m.type != MotionType::rapid) {
         if (!(modal_.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
         m.feed = modal_.feed;
@@ -177,6 +210,29 @@ class LineDecoder {
   }
 
  private:
+  // `command` in upper case with single spaces, starting with '#'.
+  void decode_command(const std::string& command, Block& block) {
+    if (command == "#DISTANCE PROG START ON") block.distance_prog_start = DistanceProgStart::on;
+    else if (command == "#DISTANCE PROG START OFF") block.distance_prog_start = DistanceProgStart::off;
+    else if (command == "#DISTANCE PROG START CLEAR") block.distance_prog_start = DistanceProgStart::clear;
+    else if (command.rfind("#DISTANCE PROG START", 0) == 0)
+      throw LineError{"#DISTANCE PROG START needs ON, OFF or CLEAR"};
+    else if (command.rfind("#SLOPE", 0) == 0) decode_slope(command);
+    else throw LineError{"command '" + command.substr(0, command.find_first_of(" [")) + "' is not supported yet"};
+  }
+
+  void decode_slope(const std::string& command) {
+    std::string args = command.substr(6);
+    args.erase(std::remove(args.begin(), args.end(), ' '), args.end());
+    const std::string prefix = "[TYPE=";
+    if (args.rfind(prefix, 0) != 0 || args.back() != ']')
+      throw LineError{"#SLOPE needs [TYPE=STEP|TRAPEZ|SIN2]"};
+    const std::string name = args.substr(prefix.size(), args.size() - prefix.size() - 1);
+    const std::optional<SlopeType> type = parse_slope_type(name);
+    if (!type) throw LineError{"#SLOPE type '" + name + "' is not one of STEP, TRAPEZ, SIN2"};
+    modal_.slope = *type;
+  }
+
   void set_arc_centre(Motion& m, std::optional<double> i, std::optional<double> j) {
     const int x = machine_.axis_index("X"), y = machine_.axis_index("Y");
     if (x < 0 || y < 0) throw LineError{"G02/G03 need axes X and Y (plane G17)"};
@@ -195,7 +251,8 @@ class LineDecoder {
   }
 
   const MachineConfig& machine_;
-  std::vector<double> position_;
+  std::vector<double> position_;             // machine coordinates
+  std::vector<double> offset_ = std::vector<double>(position_.size(), 0.0);  // G92: machine - program
   ModalState modal_;
 };
 

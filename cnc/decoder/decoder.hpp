@@ -1,7 +1,9 @@
 #pragma once
 // NC text -> blocks, for the dialect subset of KRN-1 implemented so far:
 // N, G00 G01 G02 G03 (I J centre, incremental to the start point), G90 G91,
-// F (mm/min), M30, `;` and `( )` comments, `%name`. Anything else is an
+// G92 (position preset), F (mm/min), M30, #DISTANCE PROG START ON|OFF|CLEAR,
+// #SLOPE[TYPE=STEP|TRAPEZ|SIN2], `;` and `( )` comments, `%name`. A block
+// whose axes do not move is no motion block. Anything else is an
 // error with its line number; the blocks before it are still returned, so
 // the channel can run exactly what was decoded correctly.
 #include <optional>

@@ -1,5 +1,6 @@
 #include "position_profile.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -10,34 +11,60 @@ namespace {
 
 class Planner {
  public:
-  Planner(const MotionState& start, double target, const Limits& lim, SlopeType slope)
-      : start_{start.p, start.v, start.a, 0}, target_(target), lim_(lim), slope_(slope) {}
+  // v_end: the velocity to arrive with (a = 0); 0 for a target at rest.
+  Planner(const MotionState& start, double target, double v_end, const Limits& lim, SlopeType slope)
+      : start_{start.p, start.v, start.a, 0}, target_(target), v_end_(v_end), lim_(lim), slope_(slope) {}
 
-  MotionProfile plan() {
-    const VelocityChange brake = velocity_change(start_.v, start_.a, 0, lim_, slope_);
-    const double miss = brake.end(start_).p - target_;
-    std::vector<Phase> phases;
-    // A miss within round-off is no miss: the switch time grows with its
-    // cube root, so chasing it would add microsecond wiggles to a profile
-    // that is already right (and replanning along a profile would not
-    // reproduce it).
-    const double t_brake = brake.duration();
+  // Either way along the axis, to rest on the target.
+  MotionProfile to_rest() {
+    const VelocityChange arrive = velocity_change(start_.v, start_.a, v_end_, lim_, slope_);
+    const double miss = arrive.end(start_).p - target_;
+    if (is_round_off(miss, arrive.duration())) return MotionProfile(start_, phases_of(arrive));
+    return drive_and_arrive(miss < 0 ? 1.0 : -1.0, miss);
+  }
+
+  // Forward only (along a path): if v_end cannot be reached within the
+  // distance, arrive with the reachable velocity closest to it.
+  MotionProfile forward() {
+    const VelocityChange arrive = velocity_change(start_.v, start_.a, v_end_, lim_, slope_);
+    const double miss = arrive.end(start_).p - target_;
+    if (is_round_off(miss, arrive.duration())) return MotionProfile(start_, phases_of(arrive));
+    if (miss < 0) return drive_and_arrive(1.0, miss);
+    return MotionProfile(start_, phases_of(closest_reachable_arrival()));
+  }
+
+ private:
+  // A miss within round-off is no miss: the switch time grows with its
+  // cube root, so chasing it would add microsecond wiggles to a profile
+  // that is already right (and replanning along a profile would not
+  // reproduce it).
+  bool is_round_off(double miss, double t) const {
     const double round_off = 64 * std::numeric_limits<double>::epsilon() *
-                             (std::abs(start_.p) + std::abs(target_) + (lim_.v + std::abs(start_.v)) * t_brake +
-                              std::abs(start_.a) * t_brake * t_brake);
-    if (std::abs(miss) <= round_off) {
-      brake.append_to(phases);
-      return MotionProfile(start_, phases);
-    }
-    const double dir = miss < 0 ? 1.0 : -1.0;
+                             (std::abs(start_.p) + std::abs(target_) + (lim_.v + std::abs(start_.v)) * t +
+                              std::abs(start_.a) * t * t);
+    return std::abs(miss) <= round_off;
+  }
+
+  static std::vector<Phase> phases_of(const VelocityChange& change) {
+    std::vector<Phase> phases;
+    change.append_to(phases);
+    return phases;
+  }
+
+  // Drive towards the target as hard as the limits allow and change to
+  // v_end at the instant from which that change ends on the target. With
+  // lim.v = 0 (feed hold) the drive is a stop short of the target.
+  MotionProfile drive_and_arrive(double dir, double miss) {
+    std::vector<Phase> phases;
     drive_ = velocity_change(start_.v, start_.a, dir * lim_.v, lim_, slope_);
     const MotionState driven = drive_.end(start_);
     const double miss_driven = overshoot(driven);
     if (dir * miss_driven <= 0) {
-      // The target is beyond the full drive: cruise at v_max, then brake.
       drive_.append_to(phases);
-      phases.push_back(hold(-miss_driven / (dir * lim_.v), 0.0));
-      velocity_change(driven.v, 0, 0, lim_, slope_).append_to(phases);
+      if (lim_.v > 0) {  // the target is beyond the full drive: cruise, then arrive
+        phases.push_back(hold(-miss_driven / (dir * lim_.v), 0.0));
+        velocity_change(driven.v, 0, v_end_, lim_, slope_).append_to(phases);
+      }
       return MotionProfile(start_, phases);
     }
     const double t_switch = find_switch(miss, miss_driven);
@@ -53,14 +80,30 @@ class Planner {
       s = advance(s, ph, ph.duration);
       left -= ph.duration;
     }
-    velocity_change(s.v, s.a, 0, lim_, slope_).append_to(phases);
+    velocity_change(s.v, s.a, v_end_, lim_, slope_).append_to(phases);
     return MotionProfile(start_, phases);
   }
 
+  // The end point of a change to v moves monotonically away from v_natural
+  // (the velocity of ramping a straight to 0): bisect for the v whose change
+  // ends on the target. If even ramping to a = 0 passes it, do that.
+  VelocityChange closest_reachable_arrival() const {
+    const double v_natural = std::max(0.0, velocity_after_ramp_to_zero(start_.v, start_.a, lim_, slope_));
+    auto change_to = [&](double v) { return velocity_change(start_.v, start_.a, v, lim_, slope_); };
+    if (change_to(v_natural).end(start_).p >= target_) return change_to(v_natural);
+    double near = v_natural, far = v_end_;  // ends before / beyond the target
+    for (int iteration = 0; iteration < 200; ++iteration) {
+      const double mid = (near + far) / 2;
+      if (mid == near || mid == far) break;
+      (change_to(mid).end(start_).p > target_ ? far : near) = mid;
+    }
+    return change_to(near);
+  }
+
  private:
-  // Where the fastest stop from `s` ends, relative to the target.
+  // Where the fastest change to v_end from `s` ends, relative to the target.
   double overshoot(const MotionState& s) const {
-    return velocity_change(s.v, s.a, 0, lim_, slope_).end(s).p - target_;
+    return velocity_change(s.v, s.a, v_end_, lim_, slope_).end(s).p - target_;
   }
 
   MotionState driven_for(double t) const {
@@ -103,6 +146,7 @@ class Planner {
 
   MotionState start_;
   double target_;
+  double v_end_;
   Limits lim_;
   SlopeType slope_;
   VelocityChange drive_;
@@ -111,7 +155,12 @@ class Planner {
 }  // namespace
 
 MotionProfile position_profile(const MotionState& start, double target, const Limits& lim, SlopeType slope) {
-  return Planner(start, target, lim, slope).plan();
+  return Planner(start, target, 0.0, lim, slope).to_rest();
+}
+
+MotionProfile block_profile(const MotionState& start, double end_position, double end_velocity,
+                            const Limits& lim, SlopeType slope) {
+  return Planner(start, end_position, std::clamp(end_velocity, 0.0, lim.v), lim, slope).forward();
 }
 
 MotionProfile rest_to_rest(double distance, const Limits& lim, SlopeType slope) {

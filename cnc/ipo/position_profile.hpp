@@ -19,6 +19,14 @@ namespace hil::cnc {
 // at full jerk first.
 MotionProfile position_profile(const MotionState& start, double target, const Limits& lim, SlopeType slope);
 
+// Forward along a path: from `start` (v >= 0) to `end_position`, arriving
+// with `end_velocity` (clamped to [0, lim.v]) and a = 0, cruising at lim.v.
+// Where end_velocity cannot be reached within the distance, it arrives with
+// the reachable velocity closest to it (and if even ramping a to 0 passes
+// the end, it does that). lim.v = 0 (feed hold, override 0) stops short.
+MotionProfile block_profile(const MotionState& start, double end_position, double end_velocity,
+                            const Limits& lim, SlopeType slope);
+
 // Rest-to-rest from p = 0 to p = distance.
 MotionProfile rest_to_rest(double distance, const Limits& lim, SlopeType slope = SlopeType::trapez);
 

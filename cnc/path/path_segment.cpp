@@ -15,13 +15,33 @@ PathSegment::PathSegment(const Motion& m, const MachineConfig& machine)
   arc_ = m.type == MotionType::arc_cw || m.type == MotionType::arc_ccw;
   if (arc_) set_arc_limits(m, machine);
   else set_line_limits(m, machine);
+  programmed_velocity_ = m.type == MotionType::rapid ? limits_.v : std::min(m.feed, limits_.v);
+  set_covered_distance(machine);
+}
+
+void PathSegment::set_covered_distance(const MachineConfig& machine) {
+  double main_sq = 0, leading_time = 0, leading_travel = 0;
+  for (size_t i = 0; i < start_.size(); ++i) {
+    const std::string& name = machine.axes[i].name;
+    const bool main_axis = name == "X" || name == "Y" || name == "Z";
+    const bool on_circle = static_cast<int>(i) == ix_ || static_cast<int>(i) == iy_;
+    const double travel = on_circle ? 0 : std::abs(end_[i] - start_[i]);
+    if (main_axis) main_sq += travel * travel;
+    else if (travel / machine.axes[i].v_max > leading_time) {
+      leading_time = travel / machine.axes[i].v_max;
+      leading_travel = travel;
+    }
+  }
+  const double arc_length = length_ * planar_;  // 0 on a line
+  main_sq += arc_length * arc_length;
+  covered_distance_ = main_sq > 0 ? std::sqrt(main_sq) : leading_travel;
 }
 
 void PathSegment::set_line_limits(const Motion& m, const MachineConfig& machine) {
   double sum = 0;
   for (size_t i = 0; i < start_.size(); ++i) sum += (end_[i] - start_[i]) * (end_[i] - start_[i]);
   length_ = std::sqrt(sum);
-  limits_ = {m.type == MotionType::rapid ? inf : m.feed, inf, inf};
+  limits_ = {inf, inf, inf};
   if (length_ == 0) return;
   for (size_t i = 0; i < start_.size(); ++i) {
     unit_[i] = (end_[i] - start_[i]) / length_;
@@ -63,7 +83,7 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
   const AxisConfig& y = machine.axes[iy_];
   const double c = planar_, r = radius_;
   const double a_xy = std::min(x.a_max, y.a_max), j_xy = std::min(x.j_max, y.j_max);
-  double v = std::min({m.feed, std::min(x.v_max, y.v_max) / c, std::sqrt(a_xy * r / 2) / c,
+  double v = std::min({std::min(x.v_max, y.v_max) / c, std::sqrt(a_xy * r / 2) / c,
                        std::cbrt(j_xy * r * r / 3) / c});
   double a = a_xy / (2 * c);
   double j = j_xy / (3 * c);

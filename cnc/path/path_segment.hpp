@@ -2,6 +2,7 @@
 // Geometry of one motion block (line or helical arc in the XY plane) over
 // its path length s, and the path limits (velocity, acceleration, jerk)
 // under which every axis stays within its own limits (KRN-3).
+// Path positions s run from 0 at the start to length() at the end.
 #include <vector>
 
 #include "block.hpp"
@@ -15,7 +16,15 @@ class PathSegment {
   PathSegment(const Motion& motion, const MachineConfig& machine);
 
   double length() const { return length_; }
+  // Dynamic limits of the path from the axes' limits (G00: v from the rapid
+  // velocities); the programmed feed is not one of them.
   const Limits& limits() const { return limits_; }
+  // The path velocity programmed: F, or for G00 the rapid limit.
+  double programmed_velocity() const { return programmed_velocity_; }
+  // What the block adds to the distance from program start (DPS-1): its
+  // path length over the main axes X Y Z; without main axis motion, the
+  // travel of the axis that moves at its dynamic limit.
+  double covered_distance() const { return covered_distance_; }
   const std::vector<double>& end() const { return end_; }
 
   // Axis positions at path length s; first and second derivatives by s.
@@ -27,6 +36,7 @@ class PathSegment {
   double angle_at(double s) const { return angle0_ + direction_ * planar_ * s / radius_; }
   void set_line_limits(const Motion& motion, const MachineConfig& machine);
   void set_arc_limits(const Motion& motion, const MachineConfig& machine);
+  void set_covered_distance(const MachineConfig& machine);
 
   bool arc_ = false;
   std::vector<double> start_, end_, unit_;  // unit_: d(axis)/ds of the linear axes
@@ -35,6 +45,8 @@ class PathSegment {
   double direction_ = 1;  // +1 counter-clockwise (G03), -1 clockwise (G02)
   double planar_ = 0;     // share of the path length on the circle
   double length_ = 0;
+  double programmed_velocity_ = 0;
+  double covered_distance_ = 0;
   Limits limits_;
 };
 

@@ -6,31 +6,16 @@
 #include <cmath>
 
 #include "channel.hpp"
+#include "channel_runner.hpp"
 #include "limit_check.hpp"
 #include "test_machine.hpp"
 
 using namespace hil;
 using namespace hil::cnc;
+using hil::test::run_program;
+using hil::test::start_command;
 
 namespace {
-
-HliControl start_command(bool command, bool enable = true) {
-  HliControl c;
-  c.program_start = {command, enable};
-  return c;
-}
-
-// Runs the channel until it has finished (or max cycles); returns cycles run.
-int64_t run_to_end(Channel& channel, int64_t first_cycle, logger::LimitChecker* checker = nullptr) {
-  int64_t k = first_cycle;
-  for (; !channel.finished() && k < first_cycle + 200000; ++k) {
-    channel.step(k, HliControl{});
-    if (checker)
-      for (size_t i = 0; i < channel.setpoints().size(); ++i)
-        checker->add_setpoint(static_cast<int>(i), k, channel.setpoints()[i].position);
-  }
-  return k;
-}
 
 const char* program =
     "N10 G00 X10 Y10 Z5\n"
@@ -97,8 +82,7 @@ TEST_CASE("KRN-3 channel: a whole program stays within every axis' limits", "[ch
   const MachineConfig machine = test::xyz_machine();
   Channel channel(machine, std::string(program) + "G00 X0 Y0 Z0\n");
   logger::LimitChecker checker(machine);
-  channel.step(0, start_command(true));
-  run_to_end(channel, 1, &checker);
+  run_program(channel, &checker);
   const logger::CheckReport report = checker.finish();
   for (const auto& v : report.violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
   // The limits are used, not only respected: the profile is time-optimal per block.
@@ -114,7 +98,7 @@ TEST_CASE("KRN-2 channel: after a decode error the channel runs the good blocks,
   CHECK(events[0].nc_line == 3);
   CHECK(events[0].block_nr == 30);
   CHECK(channel.hli().channel_state == ChannelState::active);
-  run_to_end(channel, 1);
+  run_program(channel, nullptr, nullptr, 1);
   CHECK(channel.hli().channel_state == ChannelState::error);
   CHECK(channel.hli().block_nr_r == 20);
   CHECK((channel.hli().stop_conditions_r & stop_condition::channel_error) != 0);

@@ -96,3 +96,35 @@ TEST_CASE("KRN-2 decoder: G01 without any feed is an error", "[decoder]") {
   CHECK(p.error->nc_line == 1);
   CHECK_THAT(p.error->message, Catch::Contains("no feed F"));
 }
+
+TEST_CASE("KRN-1 DPS-2 decoder: #DISTANCE PROG START ON/OFF/CLEAR, G92 position preset, #SLOPE", "[decoder]") {
+  const DecodedProgram p = decode(
+      "N10 #DISTANCE PROG START OFF\n"
+      "N20 G01 X0 Y0 F1000\n"  // no axis moves: no motion block
+      "N30 G92 X33 Y55\n"
+      "N40 X0 Y0\n"
+      "#distance prog start  on\n"
+      "N50 #SLOPE [TYPE=SIN2]\n"
+      "N60 G91 X100\n"
+      "N70 #DISTANCE PROG START CLEAR\n");
+  REQUIRE_FALSE(p.error);
+  REQUIRE(p.blocks.size() == 5);
+  CHECK(p.blocks[0].block_nr == 10);
+  CHECK(p.blocks[0].distance_prog_start == DistanceProgStart::off);
+  CHECK_FALSE(p.blocks[0].has_motion);
+  CHECK(p.blocks[1].block_nr == 40);  // the current position (0, 0) is X33 Y55 of the program
+  CHECK(p.blocks[1].motion.end == std::vector<double>{-33, -55, 0});
+  CHECK(p.blocks[1].slope == SlopeType::trapez);
+  CHECK(p.blocks[2].distance_prog_start == DistanceProgStart::on);
+  CHECK(p.blocks[3].motion.end == std::vector<double>{67, -55, 0});
+  CHECK(p.blocks[3].slope == SlopeType::sin2);
+  CHECK(p.blocks[4].distance_prog_start == DistanceProgStart::clear);
+
+  for (const char* bad : {"N10 #DISTANCE PROG START\n", "N10 #SLOPE[TYPE=CUBIC]\n", "N10 G01 X1 F100 #FLUSH\n",
+                          "N10 #FLUSH WAIT\n", "N10 G92 G01 X1\n"}) {
+    const DecodedProgram e = decode(bad);
+    REQUIRE(e.error);
+    CHECK(e.error->nc_line == 1);
+    CHECK(e.error->block_nr == 10);
+  }
+}

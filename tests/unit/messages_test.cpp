@@ -38,6 +38,9 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   s.axis_position_r = {100000, -25};
   s.program_start.request_r = true;
   s.program_start.state_r = true;
+  s.feedhold.state_r = true;
+  s.override.request_r = true;
+  s.override.state_r = 1200;
   const HliState t = lcm_support::from_message(through_the_wire(lcm_support::to_message(s, 42000)));
   CHECK(t.cycle == 42);
   CHECK(t.channel_state == ChannelState::error);
@@ -51,15 +54,23 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   CHECK(t.axis_position_r == s.axis_position_r);
   CHECK(t.program_start.request_r);
   CHECK(t.program_start.state_r);
+  CHECK(t.feedhold.state_r);
+  CHECK(t.override.request_r);
+  CHECK(t.override.state_r == 1200);
 
   HliControl c;
   c.cycle = 7;
   c.program_start.command_w = true;
   c.program_start.enable_w = true;
+  c.feedhold = {true, true};
+  c.override = {734, true};
   const HliControl d = lcm_support::from_message(through_the_wire(lcm_support::to_message(c, 7000)));
   CHECK(d.cycle == 7);
   CHECK(d.program_start.command_w);
   CHECK(d.program_start.enable_w);
+  CHECK(d.feedhold.command_w);
+  CHECK(d.override.command_w == 734);
+  CHECK(d.override.enable_w);
 }
 
 TEST_CASE("KRN-2 messages: an event keeps its ID, parameter, NC line, block and values", "[messages]") {

@@ -47,9 +47,11 @@ TEST_CASE("KRN-3 path: a line's limits are each axis' limit over its share of th
   CHECK(seg.limits().a == Approx(std::min(2000 / 0.6, 1500 / 0.8)));
   CHECK(seg.limits().j == Approx(std::min(40000 / 0.6, 30000 / 0.8)));
   for (const auto& v : sample(seg, m).violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
-  // The programmed feed bounds the path velocity; G00 uses each axis' rapid velocity.
-  CHECK(PathSegment(motion_of("G01 X30 Z40 F600"), m).limits().v == Approx(10));
-  CHECK(PathSegment(motion_of("G00 X30"), m).limits().v == Approx(250));
+  // The programmed feed is the path velocity asked for, not a dynamic limit;
+  // G00 asks for each axis' rapid velocity.
+  CHECK(PathSegment(motion_of("G01 X30 Z40 F600"), m).programmed_velocity() == Approx(10));
+  CHECK(PathSegment(motion_of("G01 X30 Z40 F600"), m).limits().v == Approx(std::min(250 / 0.6, 150 / 0.8)));
+  CHECK(PathSegment(motion_of("G00 X30"), m).programmed_velocity() == Approx(250));
 }
 
 TEST_CASE("KRN-3 path: arcs keep every axis within v, a and j, whatever the radius", "[path]") {
@@ -66,4 +68,21 @@ TEST_CASE("KRN-3 path: arcs keep every axis within v, a and j, whatever the radi
     const std::vector<double> end = seg.position(seg.length());
     for (size_t i = 0; i < end.size(); ++i) CHECK(end[i] == Approx(seg.end()[i]).margin(1e-9));
   }
+}
+
+TEST_CASE("DPS-1 path: the covered distance is the main axis path; without it, the leading tracking axis",
+          "[path]") {
+  MachineConfig m = test::xyz_machine();
+  AxisConfig a = m.axes[0];
+  a.name = "A";
+  a.v_max = 100;  // slower than X: leads when both move
+  m.axes.push_back(a);
+  auto covered = [&](const std::string& nc) {
+    const DecodedProgram p = decode_program(nc, m, {0, 0, 0, 0});
+    REQUIRE_FALSE(p.error);
+    return PathSegment(p.blocks.back().motion, m).covered_distance();
+  };
+  CHECK(covered("G01 X30 Y40 A90 F600") == Approx(50));        // main axes only
+  CHECK(covered("G01 A90 F600") == Approx(90));                 // tracking axis alone
+  CHECK(covered("G01 X3 Y4 F600\nG03 X3 Y4 I-3 J-4 Z10") == Approx(std::hypot(10 * M_PI, 10)));  // helix
 }

@@ -68,6 +68,18 @@ MotionState random_feasible_state(std::mt19937_64& rng, const Limits& lim, Slope
   }
 }
 
+// The lowest velocity of a profile: at phase ends and where a crosses 0.
+double min_velocity(const MotionProfile& p) {
+  double v = p.start().v;
+  for (size_t i = 0; i < p.phases().size(); ++i) {
+    const MotionState s = p.phase_start(i), e = p.phase_start(i + 1);
+    v = std::min(v, e.v);
+    if ((s.a < 0) != (e.a < 0) && p.phases()[i].shape == Phase::Shape::linear && p.phases()[i].jerk != 0)
+      v = std::min(v, advance(s, p.phases()[i], -s.a / p.phases()[i].jerk).v);
+  }
+  return v;
+}
+
 Limits random_limits(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0, 1);
   return {std::pow(10.0, -2 + 2 * u(rng)), std::pow(10.0, -1 + 2.5 * u(rng)), std::pow(10.0, 0 + 3.5 * u(rng))};
@@ -244,4 +256,55 @@ TEST_CASE("KRN-3 profile: states outside the limits are brought back, never driv
   const MotionState later = p.at(0.5);
   CHECK(later.v == Approx(0.1));
   CHECK(later.a == Approx(0).margin(1e-12));
+}
+
+TEST_CASE("KRN-3 profile: forward to a block end with an end velocity, or the closest reachable one", "[ipo]") {
+  std::mt19937_64 rng(31415);
+  std::uniform_real_distribution<double> u(0, 1);
+  long reached = 0, closest = 0, failures = 0;
+  std::ostringstream first;
+  for (int i = 0; i < 200000; ++i) {
+    const Limits lim = random_limits(rng);
+    const SlopeType slope = i % 2 ? SlopeType::trapez : SlopeType::step;
+    MotionState s;
+    do {
+      s = {0, lim.v * u(rng), lim.a * (2 * u(rng) - 1), 0};
+    } while (velocity_after_ramp_to_zero(s.v, s.a, lim, slope) < 0 ||
+             velocity_after_ramp_to_zero(s.v, s.a, lim, slope) > lim.v);
+    const double target = 0.05 * u(rng), v_end = lim.v * u(rng);
+    const MotionProfile p = block_profile(s, target, v_end, lim, slope);
+    const MotionProfile direct(s, [&] {
+      std::vector<Phase> phases;
+      velocity_change(s.v, s.a, v_end, lim, slope).append_to(phases);
+      return phases;
+    }());
+    const ProfileExtremes x = extremes(p);
+    const MotionState e = p.end();
+    const double v_natural = velocity_after_ramp_to_zero(s.v, s.a, lim, slope);
+    bool ok = x.finite && x.durations_valid && x.max_v <= lim.v * (1 + 1e-9) && x.max_a <= lim.a * (1 + 1e-9) &&
+              std::abs(e.a) <= 1e-9 * lim.a && min_velocity(p) >= -1e-9 * lim.v;  // never backwards on a path
+    if (direct.end().p <= target) {  // v_end reachable within the distance
+      ++reached;
+      ok = ok && std::abs(e.p - target) <= 1e-9 && std::abs(e.v - v_end) <= 1e-9 * lim.v;
+    } else {
+      ++closest;
+      const double lo = std::min(v_end, v_natural), hi = std::max(v_end, v_natural);
+      ok = ok && e.v >= lo - 1e-9 * lim.v && e.v <= hi + 1e-9 * lim.v && e.p >= target - 1e-9;
+    }
+    // With v_end = 0 it is the (time-optimal) positioning to rest.
+    if (ok && i % 10 == 0) {
+      const MotionProfile to_rest = block_profile(s, target, 0, lim, slope);
+      const MotionProfile positioned = position_profile(s, target, lim, slope);
+      if (positioned.end().p >= target - 1e-9 && extremes(positioned).max_v <= lim.v * (1 + 1e-9) &&
+          velocity_change(s.v, s.a, 0, lim, slope).end(s).p <= target)
+        ok = std::abs(to_rest.duration() - positioned.duration()) <= 1e-9 * (1 + positioned.duration());
+    }
+    if (!ok && ++failures <= 5)
+      first << to_string(slope) << ' ' << describe(s, target, lim) << " v_end=" << v_end << " -> p=" << e.p
+            << " v=" << e.v << " a=" << e.a << " max v=" << x.max_v << " a=" << x.max_a << '\n';
+  }
+  INFO(reached << " reached, " << closest << " closest; " << failures << " failed:\n" << first.str());
+  CHECK(reached > 50000);
+  CHECK(closest > 10000);
+  REQUIRE(failures == 0);
 }

@@ -1,0 +1,85 @@
+#pragma once
+// Look-ahead over the next motion blocks (KRN-3, FCT_LOOK_AHEAD_STANDARD =
+// 120): for each block the highest velocity it may end with, so that every
+// later block transition (corner rule) and a stop at the end of the last
+// known block can still be kept, under the programmed velocities scaled by
+// override and feed hold.
+#include <cstddef>
+#include <deque>
+
+#include "machine_config.hpp"
+#include "path_segment.hpp"
+#include "slope.hpp"
+
+namespace hil::cnc {
+
+struct LookAheadBlock {
+  size_t block_index = 0;  // into the decoded program
+  PathSegment segment;
+  SlopeType slope = SlopeType::trapez;
+  double junction_limit = 0;  // corner rule into the next block; 0 while none follows
+  double jerk_share = 1;      // of its path jerk limit; less next to a curvature step
+  // Highest velocity at its end: the corner rule and the programmed
+  // velocities on both sides, and what the stretches after it allow.
+  double v_end = 0;
+  // The velocity must drop below a cruise velocity here (a corner, a feed
+  // change, a curvature step), or the slope type changes, or nothing
+  // follows yet: where stretches end.
+  bool limiting = true;
+};
+
+// The blocks from the front up to the first limiting transition: planned as
+// one motion, so the path accelerates and brakes through transitions it
+// need not slow down for (collinear lines, tangent arcs whose curvature
+// allows the cruise velocity).
+struct Stretch {
+  double length = 0;  // path length, from the start of the front block
+  double v_end = 0;   // velocity at its end
+  Limits lim;         // v: cruise velocity; a, j: the lowest of its blocks
+  SlopeType slope = SlopeType::trapez;
+};
+
+class LookAhead {
+ public:
+  static constexpr size_t fct_look_ahead_standard = 120;
+
+  explicit LookAhead(const MachineConfig& machine, size_t capacity = fct_look_ahead_standard);
+
+  bool empty() const { return blocks_.empty(); }
+  bool full() const { return blocks_.size() >= capacity_; }
+  size_t size() const { return blocks_.size(); }
+  const LookAheadBlock& front() const { return blocks_.front(); }
+  const LookAheadBlock& operator[](size_t i) const { return blocks_[i]; }
+
+  void push(size_t block_index, PathSegment segment, SlopeType slope);
+  void pop_front() { blocks_.pop_front(); }
+
+  // Override times feed hold (0): scales every programmed velocity.
+  void set_velocity_factor(double factor);
+  double velocity_factor() const { return factor_; }
+
+  // What block i is driven under: the dynamic limits with v lowered to the
+  // scaled programmed velocity.
+  Limits cruise_limits(size_t i) const;
+
+  // The stretch that starts with the front block, for a path now moving at v_now.
+  Stretch stretch(double v_now) const;
+
+ private:
+  // New v_end from block `last` down to the front, stretch by stretch: from
+  // a limiting transition with a = 0 the path must reach the next one's
+  // v_end within the stretch between. With `until_unchanged` it stops at
+  // the first limiting transition that keeps its v_end.
+  void backward_pass(size_t last, bool until_unchanged);
+
+  const MachineConfig& machine_;
+  size_t capacity_;
+  double factor_ = 1;
+  std::deque<LookAheadBlock> blocks_;
+};
+
+// The highest velocity v0 <= v_cap from which a velocity change (a = 0 at
+// both ends) reaches v_exit within `distance`.
+double highest_entry_velocity(double v_exit, double distance, double v_cap, const Limits& lim, SlopeType slope);
+
+}  // namespace hil::cnc

@@ -1,0 +1,181 @@
+// KRN-3: the corner rule at block transitions, the look-ahead over
+// FCT_LOOK_AHEAD_STANDARD = 120 blocks, and whole programs of lines and
+// arcs interpolated with it, checked by the offline checker (RIG-4).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "channel_runner.hpp"
+#include "corner_rule.hpp"
+#include "decoder.hpp"
+#include "look_ahead.hpp"
+#include "position_profile.hpp"
+#include "profile_check.hpp"
+#include "velocity_profile.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+using hil::test::run_program;
+
+namespace {
+
+std::vector<PathSegment> segments_of(const std::string& nc, const MachineConfig& m) {
+  const DecodedProgram p = decode_program(nc, m, {0, 0, 0});
+  REQUIRE_FALSE(p.error);
+  std::vector<PathSegment> out;
+  for (const Block& b : p.blocks)
+    if (b.has_motion) out.emplace_back(b.motion, m);
+  return out;
+}
+
+// Cycles the channel needs for `nc`, checked against every axis limit.
+int64_t cycles_for(const std::string& nc, const MachineConfig& m, bool check = true) {
+  Channel channel(m, nc);
+  logger::LimitChecker checker(m);
+  const int64_t end = run_program(channel, &checker);
+  REQUIRE(channel.hli().channel_state == ChannelState::program_end);
+  if (check)
+    for (const auto& v : checker.finish().violations)
+      FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+  return end;
+}
+
+// A random program: lines (with corners, or straight on), arcs tangent to
+// the path before them and helices, random feeds.
+std::string random_program(std::mt19937_64& rng, int blocks) {
+  std::uniform_real_distribution<double> u(0, 1);
+  std::ostringstream nc;
+  nc.precision(12);
+  double x = 0, y = 0, z = 0, dx = 1, dy = 0;
+  for (int i = 0; i < blocks; ++i) {
+    const double kind = u(rng), feed = 600 + 14400 * u(rng);
+    if (kind < 0.5) {
+      if (kind < 0.25) {  // a corner: a new direction
+        const double angle = 2 * M_PI * u(rng);
+        dx = std::cos(angle);
+        dy = std::sin(angle);
+      }
+      const double l = 0.05 + 20 * u(rng) * u(rng);
+      x += l * dx;
+      y += l * dy;
+      if (u(rng) < 0.2) z += 5 * (u(rng) - 0.5);
+      nc << "G01 X" << x << " Y" << y << " Z" << z << " F" << feed << "\n";
+    } else {
+      const bool ccw = u(rng) < 0.5;
+      const double r = 0.5 + 30 * u(rng) * u(rng), sweep = 0.1 + 3 * u(rng);
+      const double nx = ccw ? -dy : dy, ny = ccw ? dx : -dx;  // towards the centre
+      const double cx = x + r * nx, cy = y + r * ny;
+      const double a0 = std::atan2(y - cy, x - cx), a1 = a0 + (ccw ? sweep : -sweep);
+      const double ex = cx + r * std::cos(a1), ey = cy + r * std::sin(a1);
+      if (u(rng) < 0.3) z += 3 * (u(rng) - 0.5);
+      nc << (ccw ? "G03" : "G02") << " X" << ex << " Y" << ey << " Z" << z << " I" << cx - x << " J" << cy - y
+         << " F" << feed << "\n";
+      x = ex;
+      y = ey;
+      dx = ccw ? -std::sin(a1) : std::sin(a1);
+      dy = ccw ? std::cos(a1) : -std::cos(a1);
+    }
+  }
+  nc << "M30\n";
+  return nc.str();
+}
+
+}  // namespace
+
+TEST_CASE("KRN-3 corner rule: stop at corners, full feed straight on, curvature changes bounded", "[look_ahead]") {
+  const MachineConfig m = test::xyz_machine();
+  SECTION("a corner between two lines is passed at rest") {
+    const auto s = segments_of("G01 X10 F6000\nY10", m);
+    CHECK(junction(s[0], s[1], m).v_max == 0);
+  }
+  SECTION("collinear lines: only the blocks' own limits") {
+    const auto s = segments_of("G01 X10 Y10 F6000\nX30 Y30", m);
+    CHECK(junction(s[0], s[1], m).v_max == Approx(250 * std::sqrt(2.0)));
+    CHECK_FALSE(junction(s[0], s[1], m).curvature_step);
+  }
+  SECTION("a line into a tangent arc: the step in curvature within one cycle") {
+    // Y sees the centripetal acceleration v^2/R appear: v^2/R/T <= j_Y/6.
+    const auto s = segments_of("G01 X10 F6000\nG03 X30 Y20 I0 J20", m);
+    CHECK(junction(s[0], s[1], m).v_max == Approx(std::sqrt(40000 * 0.001 * 20 / 6.0)));
+    CHECK(junction(s[0], s[1], m).curvature_step);
+  }
+}
+
+TEST_CASE("KRN-3 look-ahead: collinear blocks run as fast as one block of their length", "[look_ahead]") {
+  const MachineConfig m = test::xyz_machine();
+  std::ostringstream many;
+  for (int i = 1; i <= 100; ++i) many << "G01 X" << i << " F6000\n";
+  const int64_t one = cycles_for("G01 X100 F6000\nM30\n", m);
+  const int64_t hundred = cycles_for(many.str() + "M30\n", m);
+  CHECK(std::abs(hundred - one) <= 1);
+  // Without look-ahead each block would start and end at rest.
+  CHECK(one < rest_to_rest(100, {100, 2000, 40000}).duration() * 1000 + 3);
+}
+
+TEST_CASE("KRN-3 look-ahead: holds FCT_LOOK_AHEAD_STANDARD = 120 blocks and can stop within them",
+          "[look_ahead]") {
+  const MachineConfig m = test::xyz_machine();
+  const auto segments = segments_of([] {
+    std::ostringstream nc;
+    for (int i = 1; i <= 400; ++i) nc << "G01 X" << i * 0.01 << " F60000\n";
+    return nc.str();
+  }(), m);
+  LookAhead standard(m), longer(m, 400);
+  for (size_t i = 0; i < segments.size(); ++i) {
+    if (!standard.full()) standard.push(i, segments[i], SlopeType::trapez);
+    longer.push(i, segments[i], SlopeType::trapez);
+  }
+  REQUIRE(LookAhead::fct_look_ahead_standard == 120);
+  CHECK(standard.size() == 120);
+  // Straight on, the look-ahead plans one stretch over the whole window,
+  // so that it can always stop at the end of what it knows.
+  const Stretch st = standard.stretch(0);
+  CHECK(st.length == Approx(1.2));
+  CHECK(st.v_end == 0);
+  const MotionProfile from_rest = block_profile({}, st.length, st.v_end, st.lim, SlopeType::trapez);
+  CHECK(from_rest.end().p == Approx(1.2).epsilon(1e-12));
+  CHECK(from_rest.end().v == 0);
+  CHECK(longer.stretch(0).length == Approx(4.0));  // a longer window plans further ahead
+  const double v_window = extremes(from_rest).max_v;
+  CHECK(v_window < extremes(block_profile({}, 4.0, 0, st.lim, SlopeType::trapez)).max_v);
+  // And the channel never plans beyond its window: limits hold.
+  std::ostringstream nc;
+  for (int i = 1; i <= 400; ++i) nc << "G01 X" << i * 0.01 << " F60000\n";
+  cycles_for(nc.str() + "M30\n", m);
+}
+
+TEST_CASE("KRN-3 look-ahead: random programs of lines, tangent arcs and helices keep every axis' limits",
+          "[look_ahead]") {
+  const MachineConfig m = test::xyz_machine();
+  std::mt19937_64 rng(4711);
+  for (int program = 0; program < 24; ++program) {
+    const std::string nc = random_program(rng, 30);
+    const SlopeType slope = program % 3 == 0 ? SlopeType::sin2 : SlopeType::trapez;
+    INFO("slope " << to_string(slope) << ", program:\n" << nc);
+    Channel channel(m, std::string("#SLOPE[TYPE=") + to_string(slope) + "]\n" + nc);
+    logger::LimitChecker checker(m);
+    run_program(channel, &checker);
+    REQUIRE(channel.hli().channel_state == ChannelState::program_end);
+    for (const auto& v : checker.finish().violations)
+      FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+  }
+}
+
+TEST_CASE("KRN-3 look-ahead: STEP keeps velocity and acceleration limits", "[look_ahead]") {
+  const MachineConfig m = test::xyz_machine();
+  std::mt19937_64 rng(815);
+  for (int program = 0; program < 6; ++program) {
+    const std::string nc = random_program(rng, 30);
+    INFO(nc);
+    Channel channel(m, "#SLOPE[TYPE=STEP]\n" + nc);
+    logger::LimitChecker checker(m);
+    run_program(channel, &checker);
+    REQUIRE(channel.hli().channel_state == ChannelState::program_end);
+    for (const auto& v : checker.finish().violations)
+      if (v.quantity != "commanded jerk")  // STEP does not limit the jerk
+        FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+  }
+}
