@@ -19,7 +19,6 @@ bool parse_channel_state(const std::string& text, ChannelState& state);
 namespace stop_condition {
 constexpr int32_t feedhold = 0x0001;          // HLI_SC_FEEDHOLD
 constexpr int32_t override_zero = 0x0040;     // HLI_SC_OVERRIDE_ZERO
-constexpr int32_t override_rapid_zero = 0x0080;  // HLI_SC_OVERRIDE_RAPID_ZERO
 constexpr int32_t ipo_input_empty = 0x1000;   // HLI_SC_IPO_INPUT_EMPTY
 constexpr int32_t channel_error = 0x00010000;  // HLI_SC_CHANNEL_ERROR
 }  // namespace stop_condition

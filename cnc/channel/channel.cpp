@@ -105,8 +105,6 @@ void Channel::start_program() {
   blocks_ = std::move(program.blocks);
   start_cycle_ = cycle_;
   hli_.channel_state = ChannelState::active;
-  dps_counting_ = true;  // ON and CLEAR are the defaults at program start (DPS-2)
-  dps_before_front_ = 0;
   refill_look_ahead();
   if (!look_ahead_.empty()) begin_front({}, 0);
   replan_ = false;

@@ -67,7 +67,8 @@ class Channel {
   MotionProfile plan_;             // of the stretch from the front block on; p = 0 at its start
   double plan_start_ = 0;          // s after program start
   bool replan_ = false;            // override or feed hold changed
-  bool dps_counting_ = true;       // #DISTANCE PROG START ON (DPS-2)
+  // The channel starts once: ON and CLEAR, the defaults at program start (DPS-2).
+  bool dps_counting_ = true;       // #DISTANCE PROG START ON
   double dps_before_front_ = 0;    // mm counted before the front block
   int64_t start_cycle_ = 0;
   int64_t cycle_ = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "bisect.hpp"
 #include "velocity_profile.hpp"
 
 namespace hil::cnc {
@@ -91,13 +92,8 @@ class Planner {
     const double v_natural = std::max(0.0, velocity_after_ramp_to_zero(start_.v, start_.a, lim_, slope_));
     auto change_to = [&](double v) { return velocity_change(start_.v, start_.a, v, lim_, slope_); };
     if (change_to(v_natural).end(start_).p >= target_) return change_to(v_natural);
-    double near = v_natural, far = v_end_;  // ends before / beyond the target
-    for (int iteration = 0; iteration < 200; ++iteration) {
-      const double mid = (near + far) / 2;
-      if (mid == near || mid == far) break;
-      (change_to(mid).end(start_).p > target_ ? far : near) = mid;
-    }
-    return change_to(near);
+    // v_natural ends before the target, v_end beyond it.
+    return change_to(last_fitting(v_natural, v_end_, [&](double v) { return change_to(v).end(start_).p <= target_; }));
   }
 
  private:

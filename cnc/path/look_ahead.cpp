@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "bisect.hpp"
 #include "corner_rule.hpp"
 #include "velocity_profile.hpp"
 
@@ -12,13 +13,8 @@ double highest_entry_velocity(double v_exit, double distance, double v_cap, cons
   if (v_cap <= v_exit) return v_cap;
   auto covers = [&](double v0) { return velocity_change(v0, 0, v_exit, lim, slope).end({0, v0, 0, 0}).p; };
   if (covers(v_cap) <= distance) return v_cap;
-  double lo = v_exit, hi = v_cap;  // lo fits, hi does not; the distance grows with v0
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    const double mid = (lo + hi) / 2;
-    if (mid == lo || mid == hi) break;
-    (covers(mid) <= distance ? lo : hi) = mid;
-  }
-  return lo;
+  // v_exit fits, v_cap does not; the distance grows with v0.
+  return last_fitting(v_exit, v_cap, [&](double v0) { return covers(v0) <= distance; });
 }
 
 LookAhead::LookAhead(const MachineConfig& machine, size_t capacity) : machine_(machine), capacity_(capacity) {}

@@ -49,14 +49,12 @@ class LookAhead {
   bool full() const { return blocks_.size() >= capacity_; }
   size_t size() const { return blocks_.size(); }
   const LookAheadBlock& front() const { return blocks_.front(); }
-  const LookAheadBlock& operator[](size_t i) const { return blocks_[i]; }
 
   void push(size_t block_index, PathSegment segment, SlopeType slope);
   void pop_front() { blocks_.pop_front(); }
 
   // Override times feed hold (0): scales every programmed velocity.
   void set_velocity_factor(double factor);
-  double velocity_factor() const { return factor_; }
 
   // What block i is driven under: the dynamic limits with v lowered to the
   // scaled programmed velocity.

@@ -273,11 +273,7 @@ TEST_CASE("KRN-3 profile: forward to a block end with an end velocity, or the cl
              velocity_after_ramp_to_zero(s.v, s.a, lim, slope) > lim.v);
     const double target = 0.05 * u(rng), v_end = lim.v * u(rng);
     const MotionProfile p = block_profile(s, target, v_end, lim, slope);
-    const MotionProfile direct(s, [&] {
-      std::vector<Phase> phases;
-      velocity_change(s.v, s.a, v_end, lim, slope).append_to(phases);
-      return phases;
-    }());
+    const MotionProfile direct = velocity_profile(s, v_end, lim, slope);
     const ProfileExtremes x = extremes(p);
     const MotionState e = p.end();
     const double v_natural = velocity_after_ramp_to_zero(s.v, s.a, lim, slope);
