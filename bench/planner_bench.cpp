@@ -40,7 +40,6 @@ void profile_times(int cases, SlopeType slope) {
     const Limits lim{std::pow(10.0, -2 + 2 * w(rng)), std::pow(10.0, -1 + 2.5 * w(rng)),
                      std::pow(10.0, 3.5 * w(rng))};
     MotionState s{0.02 * u(rng), lim.v * u(rng), lim.a * u(rng), 0};
-    if (slope != SlopeType::trapez) s = {};  // STEP/SIN2: from rest
     const double target = 0.02 * u(rng);
     const auto t0 = clock_type::now();
     const MotionProfile p = position_profile(s, target, lim, slope);

@@ -30,8 +30,12 @@ double ramp_rate(const Limits& lim, SlopeType slope) {
   return lim.j;
 }
 
+double unwind_rate(const Limits& lim, SlopeType slope) {
+  return slope == SlopeType::step ? std::numeric_limits<double>::infinity() : lim.j;
+}
+
 double velocity_after_ramp_to_zero(double v, double a, const Limits& lim, SlopeType slope) {
-  return v + a * std::abs(a) / (2 * ramp_rate(lim, slope));
+  return v + a * std::abs(a) / (2 * unwind_rate(lim, slope));
 }
 
 }  // namespace hil::cnc

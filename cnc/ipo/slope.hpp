@@ -25,7 +25,15 @@ struct Limits {
 // takes |da| / rate and changes the velocity by (a_from + a_to) |da| / (2 rate).
 double ramp_rate(const Limits& lim, SlopeType slope);
 
-// The velocity reached when the acceleration a ramps straight to 0.
+// Jerk with which a start acceleration is brought back towards 0: full
+// jerk for every slope type (infinite for STEP). A SIN2 state met in the
+// middle of a ramp (replanning at a block transition, feed hold) must not
+// wait for a fresh sin² pulse: that would carry |v| past the velocity the
+// interrupted ramp was heading for.
+double unwind_rate(const Limits& lim, SlopeType slope);
+
+// The velocity reached when the start acceleration a is brought straight
+// back to 0 (at unwind_rate).
 double velocity_after_ramp_to_zero(double v, double a, const Limits& lim, SlopeType slope);
 
 }  // namespace hil::cnc

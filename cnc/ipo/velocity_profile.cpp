@@ -7,9 +7,33 @@
 namespace hil::cnc {
 namespace {
 
+// A ramp the change plans: a sin² pulse for SIN2.
 Phase ramp(double a_from, double a_to, const Limits& lim, SlopeType slope) {
   if (slope == SlopeType::sin2 && a_to != a_from) return sin2_ramp(a_from, a_to, lim.j);
   return linear_ramp(a_from, a_to, slope == SlopeType::step ? std::numeric_limits<double>::infinity() : lim.j);
+}
+
+// The start acceleration brought back towards 0 (see unwind_rate).
+Phase unwind(double a_from, double a_to, const Limits& lim, SlopeType slope) {
+  return linear_ramp(a_from, a_to, unwind_rate(lim, slope));
+}
+
+// The plateau a_p >= 0 of a rising change by dv from a start acceleration
+// a0 without hold: the start ramp a0 -> a_p (unwinding while |a| shrinks)
+// plus the closing ramp a_p -> 0 gain dv.
+double plateau_without_hold(double a0, double dv, double rate, double unwind_rate) {
+  if (a0 <= 0) return std::sqrt(std::max(0.0, rate * (dv + a0 * a0 / (2 * unwind_rate))));
+  const double rising = std::sqrt(std::max(0.0, rate * dv + a0 * a0 / 2));
+  if (rising >= a0 || !(unwind_rate > rate)) return rising;
+  // (a0² - a_p²) / (2 unwind) + a_p² / (2 rate) = dv
+  return std::sqrt(std::max(0.0, (dv - a0 * a0 / (2 * unwind_rate)) / (1 / (2 * rate) - 1 / (2 * unwind_rate))));
+}
+
+// Velocity gained by the start ramp a0 -> a_p (a_p >= 0).
+double start_ramp_gain(double a0, double a_p, double rate, double unwind_rate) {
+  if (a0 <= 0) return -a0 * a0 / (2 * unwind_rate) + a_p * a_p / (2 * rate);
+  if (a_p >= a0) return (a_p * a_p - a0 * a0) / (2 * rate);
+  return (a0 * a0 - a_p * a_p) / (2 * unwind_rate);
 }
 
 }  // namespace
@@ -31,7 +55,7 @@ void VelocityChange::append_to(std::vector<Phase>& out) const {
 }
 
 VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope) {
-  const double rate = ramp_rate(lim, slope);
+  const double rate = ramp_rate(lim, slope), unwinding = unwind_rate(lim, slope);
   // Solve the rising case; a falling change is its mirror image.
   const double v_ramp_down = velocity_after_ramp_to_zero(v, a, lim, slope);
   VelocityChange change;
@@ -40,32 +64,28 @@ VelocityChange velocity_change(double v, double a, double v_target, const Limits
   const double round_off = 16 * std::numeric_limits<double>::epsilon() *
                            (lim.v + std::abs(v) + std::abs(v_target) + std::abs(v_ramp_down - v));
   if (std::abs(v_target - v_ramp_down) <= round_off) {
-    change.phases[change.count++] = ramp(a, 0.0, lim, slope);
+    change.phases[change.count++] = unwind(a, 0.0, lim, slope);
     return change;
   }
   const double sign = v_ramp_down < v_target ? 1.0 : -1.0;
   const double v0 = sign * v, a0 = sign * a, vt = sign * v_target;
 
-  // Plateau a_p: rise to it, hold, ramp to 0. Without a hold,
-  // (2 a_p² - a0²) / (2 rate) = vt - v0.
+  // Plateau a_p: reach it, hold it, ramp back to 0. From outside the limit
+  // (a0 > lim.a) this comes back to it first.
   double a_p = lim.a;
-  if (!std::isinf(rate)) {
-    const double free = std::sqrt(std::max(0.0, rate * (vt - v0) + a0 * a0 / 2));
-    if (free < lim.a) a_p = free;
-  }
-  if (a0 > lim.a) a_p = lim.a;  // outside the limit: come back to it first
+  if (!std::isinf(rate)) a_p = std::min(lim.a, plateau_without_hold(a0, vt - v0, rate, unwinding));
   double dv = vt - v0;
-  if (!std::isinf(rate)) dv -= ((a0 + a_p) * std::abs(a_p - a0) + a_p * a_p) / (2 * rate);
+  if (!std::isinf(rate)) dv -= start_ramp_gain(a0, a_p, rate, unwinding) + a_p * a_p / (2 * rate);
   const double t_hold = a_p > 0 ? std::max(0.0, dv / a_p) : 0.0;
 
-  // A SIN2 ramp through a = 0 is two pulses, so the velocity never moves
-  // further the wrong way than a direct ramp to 0 would take it.
-  double a_from = a;
-  if (slope == SlopeType::sin2 && a0 < 0 && a_p > 0) {
-    change.phases[change.count++] = ramp(a, 0.0, lim, slope);
-    a_from = 0;
+  if (a0 < 0 && slope == SlopeType::sin2) {  // the wrong way: unwind, then a fresh pulse
+    change.phases[change.count++] = unwind(a, 0.0, lim, slope);
+    change.phases[change.count++] = ramp(0.0, sign * a_p, lim, slope);
+  } else if (a_p < a0) {
+    change.phases[change.count++] = unwind(a, sign * a_p, lim, slope);
+  } else {
+    change.phases[change.count++] = ramp(a, sign * a_p, lim, slope);
   }
-  change.phases[change.count++] = ramp(a_from, sign * a_p, lim, slope);
   change.phases[change.count++] = hold(t_hold, sign * a_p);
   change.phases[change.count++] = ramp(sign * a_p, 0.0, lim, slope);
   return change;

@@ -22,9 +22,11 @@ struct VelocityChange {
 };
 
 // From (v, a) to (v_target, 0), fastest under lim.a and lim.j for the slope
-// type. An |a| above lim.a is first brought back at full jerk (the
-// velocity overshoot this implies cannot be avoided). lim.v is not applied
-// here: the caller chooses v_target.
+// type. The start acceleration, where it has to shrink (above lim.a, or
+// carrying v past v_target), is brought back at full jerk (unwind_rate):
+// for SIN2 a linear ramp, since the state may be in the middle of a sin²
+// pulse; the velocity overshoot that remains cannot be avoided. lim.v is
+// not applied here: the caller chooses v_target.
 VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope);
 
 // The velocity-target mode: v_target is clamped to [-lim.v, lim.v].
