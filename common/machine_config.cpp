@@ -38,16 +38,49 @@ AxisConfig parse_axis(const YAML::Node& node, size_t index) {
   axis.j_max = positive(node, "j_max", at);
   axis.kv = positive(node, "kv", at);
   axis.velocity_lag_s = positive(node, "velocity_lag_s", at);
-  if (node["dyn_monitoring_a_warn"]) axis.dyn_monitoring_a_warn = node["dyn_monitoring_a_warn"].as<int32_t>();
-  if (node["dyn_monitoring_a_err"]) axis.dyn_monitoring_a_err = node["dyn_monitoring_a_err"].as<int32_t>();
-  // Values below 1000 would put the monitoring limit below a_max, so planned
-  // motion would trip it: almost surely the value was meant as a percentage
-  // excess. Refuse rather than guess (docs/UNITS.md).
+  auto integer = [&](const char* key, int32_t& value) {
+    if (node[key]) value = node[key].as<int32_t>();
+  };
+  integer("dyn_monitoring_a_warn", axis.dyn_monitoring_a_warn);
+  integer("dyn_monitoring_a_err", axis.dyn_monitoring_a_err);
+  integer("dyn_monitoring_v_warn", axis.dyn_monitoring_v_warn);
+  integer("dyn_monitoring_v_err", axis.dyn_monitoring_v_err);
+  // Values below 1000 would put the monitoring limit below a_max (v_max), so
+  // planned motion would trip it: almost surely the value was meant as a
+  // percentage excess. Refuse rather than guess (docs/UNITS.md).
   if (axis.dyn_monitoring_a_warn < 1000)
     throw ConfigError(at + ": P-AXIS-00441 dyn_monitoring_a_warn must be >= 1000 (limit = a_max * value / 1000)");
   if (axis.dyn_monitoring_a_err < axis.dyn_monitoring_a_warn)
     throw ConfigError(at + ": P-AXIS-00442 dyn_monitoring_a_err must be >= P-AXIS-00441 dyn_monitoring_a_warn");
-  if (node["following_error_max"]) axis.following_error_max = positive(node, "following_error_max", at);
+  if (axis.dyn_monitoring_v_warn < 1000)
+    throw ConfigError(at + ": P-AXIS-00439 dyn_monitoring_v_warn must be >= 1000 (limit = v_max * value / 1000)");
+  if (axis.dyn_monitoring_v_err < axis.dyn_monitoring_v_warn)
+    throw ConfigError(at + ": P-AXIS-00440 dyn_monitoring_v_err must be >= P-AXIS-00439 dyn_monitoring_v_warn");
+
+  if (node["slep_max"]) {
+    axis.slep_max = positive(node, "slep_max", at);
+    axis.slep_min = node["slep_min"] ? positive(node, "slep_min", at) : axis.slep_max;
+    axis.following_error_monitoring = 4;
+  }
+  integer("following_error_monitoring", axis.following_error_monitoring);
+  if (axis.following_error_monitoring != 0 && axis.following_error_monitoring != 4)
+    throw ConfigError(at + ": P-AXIS-00172 following_error_monitoring " +
+                      std::to_string(axis.following_error_monitoring) +
+                      " is not supported (0 = off, 4 = velocity-independent)");
+  if (axis.following_error_monitoring == 4 && !(axis.slep_max > 0))
+    throw ConfigError(at + ": P-AXIS-00172 following_error_monitoring 4 needs P-AXIS-00168 slep_max");
+
+  if (node["swe_neg"] || node["swe_pos"]) {
+    if (!node["swe_neg"] || !node["swe_pos"])
+      throw ConfigError(at + ": software limit switches need both P-AXIS-00177 swe_neg and P-AXIS-00178 swe_pos");
+    axis.software_limits = true;
+    axis.swe_neg = node["swe_neg"].as<double>();
+    axis.swe_pos = node["swe_pos"].as<double>();
+    if (!(axis.swe_neg < axis.swe_pos))
+      throw ConfigError(at + ": P-AXIS-00177 swe_neg must be below P-AXIS-00178 swe_pos");
+    if (node["swe_toleranz"]) axis.swe_toleranz = node["swe_toleranz"].as<double>();
+    if (!(axis.swe_toleranz >= 0)) throw ConfigError(at + ": P-AXIS-00179 swe_toleranz must be >= 0");
+  }
   return axis;
 }
 

@@ -21,10 +21,26 @@ struct AxisConfig {
   // (see docs/UNITS.md). 1500 / 2000 mean 1.5 x and 2.0 x a_max.
   int32_t dyn_monitoring_a_warn = 1500;
   int32_t dyn_monitoring_a_err = 2000;
-  double following_error_max = 0;  // mm, 0 = not checked offline
+  // P-AXIS-00439 / 00440, the same way of v_max: 1050 / 1090 are the
+  // TF5200 defaults (5 % / 9 % above v_max).
+  int32_t dyn_monitoring_v_warn = 1050;
+  int32_t dyn_monitoring_v_err = 1090;
+  // Following error monitoring, P-AXIS-00172: 0 off, 4 velocity-independent
+  // (|FE| <= slep_max while the axis moves, <= slep_min at standstill).
+  int32_t following_error_monitoring = 0;
+  double slep_max = 0;  // mm, P-AXIS-00168 (also the offline check's limit; 0 = none)
+  double slep_min = 0;  // mm, P-AXIS-00169
+  // Software limit switches P-AXIS-00177 (swe_neg) / 00178 (swe_pos): the
+  // setpoint must stay within them, the actual position within them widened
+  // by P-AXIS-00179 swe_toleranz. Not monitored unless configured.
+  bool software_limits = false;
+  double swe_neg = 0, swe_pos = 0;  // mm
+  double swe_toleranz = 0.1;        // mm
 
   double accel_warning_limit() const { return a_max * dyn_monitoring_a_warn / 1000.0; }
   double accel_error_limit() const { return a_max * dyn_monitoring_a_err / 1000.0; }
+  double velocity_warning_limit() const { return v_max * dyn_monitoring_v_warn / 1000.0; }
+  double velocity_error_limit() const { return v_max * dyn_monitoring_v_err / 1000.0; }
 };
 
 struct MachineConfig {

@@ -110,6 +110,11 @@ EventExpectation parse_event_expectation(const YAML::Node& node, const std::stri
   return e;
 }
 
+ViolationExpectation parse_violation_expectation(const YAML::Node& node, const std::string& where) {
+  if (!node["axis"] || !node["quantity"]) throw ConfigError(where + ": give 'axis' and 'quantity'");
+  return {node["axis"].as<std::string>(), node["quantity"].as<std::string>()};
+}
+
 template <typename T, typename Parse>
 std::vector<T> parse_list(const YAML::Node& node, const std::string& name, Parse parse) {
   std::vector<T> items;
@@ -169,6 +174,11 @@ Scenario parse_scenario(const YAML::Node& root) {
     s.expectations = parse_list<Expectation>(root["expect"], "expect", parse_expectation);
     s.expected_events = parse_list<EventExpectation>(root["expect_events"], "expect_events",
                                                      parse_event_expectation);
+    s.expected_violations = parse_list<ViolationExpectation>(root["expect_violations"], "expect_violations",
+                                                             parse_violation_expectation);
+    for (const auto& v : s.expected_violations)
+      if (s.machine.axis_index(v.axis) < 0)
+        throw ConfigError("expect_violations: axis '" + v.axis + "' is not on the machine");
     for (const auto& e : s.expectations)
       for (const auto& axis : e.axis_position_mm)
         if (s.machine.axis_index(axis.first) < 0)

@@ -62,6 +62,16 @@ struct EventExpectation {
   bool absent = false;  // instead: none may appear
 };
 
+// An offline-check violation the scenario provokes on purpose (RIG-4): the
+// run passes only if it is found, and no violation passes unless expected.
+struct ViolationExpectation {
+  std::string axis;
+  std::string quantity;  // a part of the checker's quantity, e.g. "actual acceleration"
+  bool matches(const std::string& violation_axis, const std::string& violation_quantity) const {
+    return violation_axis == axis && violation_quantity.find(quantity) != std::string::npos;
+  }
+};
+
 struct Scenario {
   std::string name;
   std::string description;
@@ -73,6 +83,7 @@ struct Scenario {
   std::vector<TimelineStep> timeline;
   std::vector<Expectation> expectations;
   std::vector<EventExpectation> expected_events;
+  std::vector<ViolationExpectation> expected_violations;
   bool allow_errors = false;   // unexpected error events fail the run unless true
 
   YAML::Node resolved;  // the whole scenario, machine and NC program inline

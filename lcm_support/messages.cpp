@@ -93,4 +93,16 @@ HliControl from_message(const hil::hli_control_t& m) {
   return c;
 }
 
+std::string monitor_names(int32_t bits) {
+  static const std::pair<int32_t, const char*> names[] = {
+      {hil::axis_state_t::MONITOR_ACCELERATION, "acceleration P-AXIS-00442"},
+      {hil::axis_state_t::MONITOR_VELOCITY, "velocity P-AXIS-00440"},
+      {hil::axis_state_t::MONITOR_FOLLOWING_ERROR, "following error P-AXIS-00168/00169"},
+      {hil::axis_state_t::MONITOR_SOFTWARE_LIMIT, "software limit switch P-AXIS-00177/00178"}};
+  std::string out;
+  for (const auto& [bit, name] : names)
+    if (bits & bit) out += (out.empty() ? "" : ", ") + std::string(name);
+  return out.empty() ? "monitoring" : out;
+}
+
 }  // namespace hil::lcm_support

@@ -1,6 +1,7 @@
 #pragma once
 // Translation between the LCM-free values of the libraries and the hil LCM
 // types. The only place that knows both.
+#include <hil/axis_state_t.hpp>
 #include <hil/event_t.hpp>
 #include <hil/hli_control_t.hpp>
 #include <hil/hli_state_t.hpp>
@@ -20,5 +21,8 @@ HliState from_message(const hil::hli_state_t& message);
 
 hil::hli_control_t to_message(const HliControl& control, int64_t utime);
 HliControl from_message(const hil::hli_control_t& message);
+
+// The monitors named by axis_state_t MONITOR_* bits: "acceleration, velocity".
+std::string monitor_names(int32_t bits);
 
 }  // namespace hil::lcm_support

@@ -16,7 +16,8 @@ LimitChecker::LimitChecker(const MachineConfig& machine)
     s.a_max = a.a_max;
     s.j_max = a.j_max;
     s.a_err_limit = a.accel_error_limit();
-    s.following_error_max = a.following_error_max;
+    s.v_err_limit = a.velocity_error_limit();
+    s.slep_max = a.slep_max;
   }
 }
 
@@ -24,17 +25,29 @@ void LimitChecker::check(std::vector<Violation>& out, double& max_seen, double v
                          int64_t cycle, const std::string& axis, const char* quantity, double noise) const {
   const double magnitude = std::abs(value);
   max_seen = std::max(max_seen, magnitude);
-  if (!(limit > 0 && magnitude > limit * (1 + limit_tolerance) + noise)) return;
+  if (limit > 0 && magnitude > limit * (1 + limit_tolerance) + noise) record(out, value, limit, cycle, axis, quantity);
+}
+
+void LimitChecker::check_software_limits(std::vector<Violation>& out, const AxisConfig& a, double position,
+                                         double tolerance, int64_t cycle, const char* quantity_pos,
+                                         const char* quantity_neg) const {
+  if (!a.software_limits) return;
+  if (position > a.swe_pos + tolerance) record(out, position, a.swe_pos + tolerance, cycle, a.name, quantity_pos);
+  if (position < a.swe_neg - tolerance) record(out, position, a.swe_neg - tolerance, cycle, a.name, quantity_neg);
+}
+
+void LimitChecker::record(std::vector<Violation>& out, double value, double limit, int64_t cycle,
+                          const std::string& axis, const char* quantity) const {
   const double t = cycle * machine_.cycle_time_s();
   // Quantities of one axis interleave in `out`: the episode to extend, if
   // any, is among the last few entries.
-  for (size_t back = 0; back < std::min<size_t>(out.size(), 4); ++back) {
+  for (size_t back = 0; back < std::min<size_t>(out.size(), 6); ++back) {
     Violation& v = out[out.size() - 1 - back];
     if (v.axis != axis || v.quantity != quantity) continue;
     if (std::llround(v.end_time_s / machine_.cycle_time_s()) + 1 != cycle) break;
     v.end_time_s = t;
     ++v.cycles;
-    if (magnitude > std::abs(v.value)) {
+    if (std::abs(value) > std::abs(v.value)) {
       v.value = value;
       v.worst_time_s = t;
     }
@@ -49,14 +62,19 @@ void LimitChecker::add_setpoint(int axis, int64_t cycle, double position) {
   ++summary_[axis].setpoints;
 }
 
-void LimitChecker::add_actual(int axis, int64_t cycle, double velocity, double acceleration,
+void LimitChecker::add_actual(int axis, int64_t cycle, double position, double velocity, double acceleration,
                               double following_error) {
   AxisSummary& s = summary_[axis];
   ++s.states;
-  s.act_v = std::max(s.act_v, std::abs(velocity));
+  check(actual_violations_, s.act_v, velocity, s.v_err_limit, cycle, s.axis,
+        "actual velocity (P-AXIS-00440 limit)", 0);
+  const AxisConfig& a = machine_.axes[axis];
+  check_software_limits(actual_violations_, a, position, a.swe_toleranz, cycle,
+                        "actual position (P-AXIS-00178 swe_pos + P-AXIS-00179)",
+                        "actual position (P-AXIS-00177 swe_neg - P-AXIS-00179)");
   check(actual_violations_, s.act_a, acceleration, s.a_err_limit, cycle, s.axis,
         "actual acceleration (P-AXIS-00442 limit)", 0);
-  check(actual_violations_, s.following_error, following_error, s.following_error_max, cycle, s.axis,
+  check(actual_violations_, s.following_error, following_error, s.slep_max, cycle, s.axis,
         "following error", 0);
 }
 
@@ -82,6 +100,8 @@ CheckReport LimitChecker::finish() const {
         continue;
       }
       ++run;
+      check_software_limits(report.violations, machine_.axes[i], t.position[k], 0, t.cycle[k],
+                            "commanded position (P-AXIS-00178 swe_pos)", "commanded position (P-AXIS-00177 swe_neg)");
       const double v = (t.position[k] - t.position[k - 1]) / dt;
       check(report.violations, s.cmd_v, v, s.v_max, t.cycle[k], s.axis, "commanded velocity", noise[1]);
       if (run >= 3) {

@@ -30,7 +30,7 @@ struct AxisSummary {
   double cmd_v = 0, cmd_a = 0, cmd_j = 0;  // max |.| of the commanded motion
   double act_v = 0, act_a = 0;             // max |.| of the actual motion
   double following_error = 0;              // max |.|
-  double v_max = 0, a_max = 0, j_max = 0, a_err_limit = 0, following_error_max = 0;
+  double v_max = 0, a_max = 0, j_max = 0, a_err_limit = 0, v_err_limit = 0, slep_max = 0;
   int64_t setpoints = 0, states = 0;       // samples seen
 };
 
@@ -46,7 +46,8 @@ class LimitChecker {
 
   // Samples of one axis in cycle order.
   void add_setpoint(int axis, int64_t cycle, double position);
-  void add_actual(int axis, int64_t cycle, double velocity, double acceleration, double following_error);
+  void add_actual(int axis, int64_t cycle, double position, double velocity, double acceleration,
+                  double following_error);
   CheckReport finish() const;
 
  private:
@@ -56,6 +57,12 @@ class LimitChecker {
   };
   void check(std::vector<Violation>& out, double& max_seen, double value, double limit, int64_t cycle,
              const std::string& axis, const char* quantity, double noise) const;
+  // P-AXIS-00177 / 00178, widened by `tolerance`.
+  void check_software_limits(std::vector<Violation>& out, const AxisConfig& axis, double position, double tolerance,
+                             int64_t cycle, const char* quantity_pos, const char* quantity_neg) const;
+  // Starts or extends the episode of `quantity` of `axis`.
+  void record(std::vector<Violation>& out, double value, double limit, int64_t cycle, const std::string& axis,
+              const char* quantity) const;
 
   MachineConfig machine_;
   std::vector<Trace> setpoints_;

@@ -76,7 +76,7 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       } else if (ends_with(e->channel, "_STATE")) {
         hil::axis_state_t m;
         if (!decode(*e, m)) { ++log.undecodable; continue; }
-        checker->add_actual(axis, m.cycle, m.velocity, m.acceleration, m.following_error);
+        checker->add_actual(axis, m.cycle, m.position, m.velocity, m.acceleration, m.following_error);
       }
     }
   }

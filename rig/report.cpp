@@ -23,13 +23,13 @@ int count_errors(const logger::RunLog& log) {
 std::string format_check(const logger::RunLog& log, const logger::CheckReport& report) {
   std::ostringstream out;
   out << "axis | cmd |v| / v_max [mm/s] | cmd |a| / a_max [mm/s^2] | cmd |j| / j_max [mm/s^3]"
-         " | act |a| / P-AXIS-00442 limit | max |FE| / limit [mm]\n";
+         " | act |v| / P-AXIS-00440 limit | act |a| / P-AXIS-00442 limit | max |FE| / P-AXIS-00168 [mm]\n";
   for (const auto& a : report.axes) {
     out << a.axis << "    | " << fmt("%9.3f / %-9.3f", a.cmd_v, a.v_max) << "| "
         << fmt("%10.2f / %-10.2f", a.cmd_a, a.a_max) << "| " << fmt("%11.1f / %-11.1f", a.cmd_j, a.j_max)
-        << "| " << fmt("%10.2f / %-10.2f", a.act_a, a.a_err_limit) << "| "
-        << fmt("%8.5f / %-8.5f", a.following_error, a.following_error_max)
-        << (a.following_error_max > 0 ? "" : "(none)") << '\n';
+        << "| " << fmt("%9.3f / %-9.3f", a.act_v, a.v_err_limit) << "| " << fmt("%10.2f / %-10.2f", a.act_a, a.a_err_limit) << "| "
+        << fmt("%8.5f / %-8.5f", a.following_error, a.slep_max)
+        << (a.slep_max > 0 ? "" : "(none)") << '\n';
   }
   int64_t violating_cycles = 0;
   for (const auto& v : report.violations) violating_cycles += v.cycles;

@@ -91,7 +91,23 @@ RunResult run_scenario(const RunOptions& options) {
     if (e.event.message.rfind("PASS", 0) == 0) ++expectations_passed;
     if (e.event.message.rfind("FAIL", 0) == 0) ++expectations_failed;
   }
-  const bool check_passed = check && check->passed();
+  // Violations the scenario provokes on purpose must be found; no other may be.
+  bool check_passed = check.has_value();
+  std::ostringstream violations_expected;
+  if (check) {
+    for (const auto& v : check->violations) {
+      bool expected = false;
+      for (const auto& e : scenario.expected_violations) expected = expected || e.matches(v.axis, v.quantity);
+      check_passed = check_passed && expected;
+    }
+    for (const auto& e : scenario.expected_violations) {
+      bool found = false;
+      for (const auto& v : check->violations) found = found || e.matches(v.axis, v.quantity);
+      check_passed = check_passed && found;
+      violations_expected << "expected violation: axis " << e.axis << " " << e.quantity << ": "
+                          << (found ? "found" : "NOT FOUND") << '\n';
+    }
+  }
   result.passed = all_ok && log.run_end_seen && check_passed && expectations_failed == 0 && log.undecodable == 0;
 
   std::ostringstream out;
@@ -112,7 +128,7 @@ RunResult run_scenario(const RunOptions& options) {
       << " x real time)\n"
       << "exit status: " << processes.str() << (log.run_end_seen ? "" : "; no RUN_END in the log") << '\n'
       << "expectations (plc_sim): " << expectations_passed << " passed, " << expectations_failed << " failed\n";
-  if (check) out << format_check(log, *check);
+  if (check) out << format_check(log, *check) << violations_expected.str();
   else out << "offline check: the log has no manifest\n";
   result.report = out.str();
   std::ofstream(dir / "report.txt") << result.report;

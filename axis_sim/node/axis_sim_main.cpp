@@ -5,7 +5,7 @@
 #include <lcm/lcm-cpp.hpp>
 #include <spdlog/spdlog.h>
 
-#include "acceleration_monitor.hpp"
+#include "drive_monitor.hpp"
 #include "channels.hpp"
 #include "drive_model.hpp"
 #include "messages.hpp"
@@ -40,7 +40,8 @@ class AxisSimNode {
     last_cycle_ = m.cycle;
     const axis::DriveOutput out = drive_.step(m.position, m.velocity);
     std::vector<Event> events;
-    const axis::AccelerationCheck check = monitor_.check(out.acceleration, events);
+    const axis::MonitorState monitored = monitor_.check(
+        {m.position, m.velocity, out.position, out.velocity, out.acceleration, out.following_error}, events);
     for (const Event& e : events) {
       spdlog::warn("{}", describe(e));
       const hil::event_t em = lcm_support::to_message(e, m.cycle, m.utime, source_);
@@ -55,15 +56,15 @@ class AxisSimNode {
     s.velocity = out.velocity;
     s.acceleration = out.acceleration;
     s.following_error = out.following_error;
-    s.accel_warning = check.warning;
-    s.accel_error = check.error;
+    s.warnings = monitored.warnings;
+    s.errors = monitored.errors;
     lcm_.publish(channels::axis_state(axis_.name), &s);
   }
 
   AxisConfig axis_;
   lcm::LCM& lcm_;
   axis::DriveModel drive_;
-  axis::AccelerationMonitor monitor_;
+  axis::DriveMonitor monitor_;
   std::string source_;
   int64_t last_cycle_ = -1;
 };

@@ -24,7 +24,22 @@ std::vector<Event> Channel::take_events() {
 }
 
 bool Channel::finished() const {
-  return hli_.channel_state == ChannelState::program_end || hli_.channel_state == ChannelState::error;
+  return hli_.channel_state == ChannelState::program_end ||
+         (hli_.channel_state == ChannelState::error && !error_stop_);
+}
+
+void Channel::drive_error(const std::string& axis, const std::string& what) {
+  if (hli_.channel_state == ChannelState::error || hli_.channel_state == ChannelState::program_end) return;
+  Event e;
+  e.axis = axis;
+  e.nc_line = hli_.block_count_r;
+  e.block_nr = hli_.block_nr_r;
+  e.message = "channel stopped: drive error on axis " + axis + " (" + what + "); program aborted";
+  raise(e);
+  error_stop_ = hli_.channel_state == ChannelState::active;
+  hli_.channel_state = ChannelState::error;
+  look_ahead_.set_velocity_factor(0.0);
+  replan_ = true;
 }
 
 void Channel::raise(Event event) {
@@ -37,8 +52,11 @@ void Channel::step(int64_t cycle, const HliControl& control) {
   hli_.cycle = cycle;
   apply_velocity_control(control);
   apply_program_start(control.program_start);
-  if (hli_.channel_state == ChannelState::active)
-    interpolate(static_cast<double>(cycle - start_cycle_) * machine_.cycle_time_s());
+  if (hli_.channel_state == ChannelState::active || error_stop_) {
+    const double t = static_cast<double>(cycle - start_cycle_) * machine_.cycle_time_s();
+    interpolate(t);
+    if (error_stop_ && (look_ahead_.empty() || t - plan_start_ >= plan_.duration())) error_stop_ = false;
+  }
   for (size_t i = 0; i < setpoints_.size(); ++i)
     hli_.axis_position_r[i] = std::llround(setpoints_[i].position * hli_units_per_mm);
   hli_.program_start.state_r = hli_.channel_state == ChannelState::active;
@@ -90,6 +108,7 @@ void Channel::apply_velocity_control(const HliControl& control) {
   if (hold == hli_.feedhold.state_r && value == hli_.override.state_r) return;
   hli_.feedhold.state_r = hold;
   hli_.override.state_r = value;
+  if (hli_.channel_state == ChannelState::error) return;  // stopping for good
   look_ahead_.set_velocity_factor(hold ? 0.0 : value / static_cast<double>(override_full));
   replan_ = true;
 }
@@ -195,7 +214,8 @@ void Channel::interpolate(double t) {
     run_blocks_without_motion(blocks_.size());
     hli_.dist_prog_start = dps_before_front_ * hli_units_per_mm;
     hli_.path_velocity = 0;
-    hli_.channel_state = decode_failed_ ? ChannelState::error : ChannelState::program_end;
+    if (hli_.channel_state != ChannelState::error)
+      hli_.channel_state = decode_failed_ ? ChannelState::error : ChannelState::program_end;
     return;
   }
   if (t - plan_start_ >= plan_.duration()) path.v = path.a = 0;  // held short of the block end

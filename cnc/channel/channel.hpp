@@ -38,6 +38,11 @@ class Channel {
   // Program end or error reached: the channel commands no more motion.
   bool finished() const;
 
+  // A drive reported a monitoring error (RIG-3): the channel stops along the
+  // path as fast as the limits allow, jerk-limited, aborts the program and
+  // shows the channel error on the HLI. Applied before the next step().
+  void drive_error(const std::string& axis, const std::string& what);
+
  private:
   void apply_program_start(const ControlUnitBool& start);
   void apply_velocity_control(const HliControl& control);
@@ -67,6 +72,7 @@ class Channel {
   MotionProfile plan_;             // of the stretch from the front block on; p = 0 at its start
   double plan_start_ = 0;          // s after program start
   bool replan_ = false;            // override or feed hold changed
+  bool error_stop_ = false;        // stopping on a drive error: still moving
   // The channel starts once: ON and CLEAR, the defaults at program start (DPS-2).
   bool dps_counting_ = true;       // #DISTANCE PROG START ON
   double dps_before_front_ = 0;    // mm counted before the front block

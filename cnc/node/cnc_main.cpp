@@ -27,6 +27,7 @@ using clock_type = std::chrono::steady_clock;
 // What the participants answered so far.
 struct Answers {
   std::vector<int64_t> axis_cycle;
+  std::vector<int32_t> axis_errors;  // MONITOR_* bits of the latest answer
   int64_t plc_cycle = -1;
   HliControl control;
   std::set<std::string> ready;
@@ -40,6 +41,7 @@ class CncNode {
         answer_timeout_(answer_timeout), channel_(scenario.machine, scenario.nc_program) {
     lcm_support::require_good(lcm_, url);
     answers_.axis_cycle.assign(machine_.axes.size(), -1);
+    answers_.axis_errors.assign(machine_.axes.size(), 0);
     for (size_t i = 0; i < machine_.axes.size(); ++i) {
       auto* sub = lcm_.subscribeFunction(
           channels::axis_state(machine_.axes[i].name),
@@ -86,6 +88,8 @@ class CncNode {
         break;
       }
       control = answers_.control;
+      for (size_t i = 0; i < machine_.axes.size(); ++i)
+        if (answers_.axis_errors[i]) channel_.drive_error(machine_.axes[i].name, lcm_support::monitor_names(answers_.axis_errors[i]));
       if (channel_.finished() && finished_at < 0) finished_at = k;
       if (finished_at >= 0 && k - finished_at >= settle_cycles) break;
       if (k >= max_cycles) {
@@ -185,7 +189,9 @@ class CncNode {
   void on_axis_state(const std::string& channel, const hil::axis_state_t& m) {
     const int axis = machine_.axis_index(m.axis);
     if (axis < 0 || channels::axis_state(m.axis) != channel) return;
-    answers_.axis_cycle[axis] = std::max(answers_.axis_cycle[axis], m.cycle);
+    if (m.cycle <= answers_.axis_cycle[axis]) return;
+    answers_.axis_cycle[axis] = m.cycle;
+    answers_.axis_errors[axis] = m.errors;
   }
 
   Scenario scenario_;

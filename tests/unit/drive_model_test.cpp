@@ -1,11 +1,13 @@
 // RIG-3: the drive model against its analytic step response, and the
-// acceleration monitoring per P-AXIS-00441 / P-AXIS-00442.
+// drive monitoring: acceleration P-AXIS-00441/00442, velocity
+// P-AXIS-00439/00440, following error P-AXIS-00168/00169 (P-AXIS-00172),
+// software limit switches P-AXIS-00177/00178/00179.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 
-#include "acceleration_monitor.hpp"
 #include "drive_model.hpp"
+#include "drive_monitor.hpp"
 #include "test_machine.hpp"
 
 using namespace hil;
@@ -53,34 +55,127 @@ TEST_CASE("RIG-3 drive model: the discrete system is stable; bad parameters are 
   CHECK_THROWS_AS(DriveModel({40, -1, 0.001}), std::invalid_argument);
 }
 
+namespace {
+
+// A sample at rest on the setpoint but for the quantity a test sets.
+DriveSample at_rest() { return {}; }
+
+DriveSample with_acceleration(double a) {
+  DriveSample s = at_rest();
+  s.acceleration = a;
+  return s;
+}
+
+}  // namespace
+
 TEST_CASE("RIG-3 acceleration monitor: P-AXIS-00441 warning and P-AXIS-00442 error at a_max * value / 1000",
           "[drive]") {
   AxisConfig axis = test::xyz_machine().axes[0];  // a_max 2000, 1500 / 2000
   REQUIRE(axis.accel_warning_limit() == 3000);
   REQUIRE(axis.accel_error_limit() == 4000);
-  AccelerationMonitor monitor(axis);
+  DriveMonitor monitor(axis);
   std::vector<Event> events;
-  CHECK_FALSE(monitor.check(2999, events).warning);
+  CHECK(monitor.check(with_acceleration(2999), events).warnings == 0);
   CHECK(events.empty());
-  AccelerationCheck c = monitor.check(-3001, events);
-  CHECK(c.warning);
-  CHECK_FALSE(c.error);
+  MonitorState c = monitor.check(with_acceleration(-3001), events);
+  CHECK(c.warnings == monitor::acceleration);
+  CHECK(c.errors == 0);
   REQUIRE(events.size() == 1);
   CHECK(events[0].severity == Severity::warning);
   CHECK(events[0].parameter == "P-AXIS-00441");
   CHECK(events[0].value == -3001);
   CHECK(events[0].limit == 3000);
-  monitor.check(3500, events);  // still above: no second warning
+  monitor.check(with_acceleration(3500), events);  // still above: no second warning
   CHECK(events.size() == 1);
-  c = monitor.check(4001, events);
-  CHECK(c.error);
+  c = monitor.check(with_acceleration(4001), events);
+  CHECK(c.errors == monitor::acceleration);
   REQUIRE(events.size() == 2);
   CHECK(events[1].severity == Severity::error);
   CHECK(events[1].parameter == "P-AXIS-00442");
   CHECK(events[1].axis == "X");
-  monitor.check(0, events);
-  monitor.check(4500, events);  // a new excursion past both: warning and error again
+  monitor.check(at_rest(), events);
+  monitor.check(with_acceleration(4500), events);  // a new excursion past both: warning and error again
   REQUIRE(events.size() == 4);
   CHECK(events[2].parameter == "P-AXIS-00441");
   CHECK(events[3].parameter == "P-AXIS-00442");
+}
+
+TEST_CASE("RIG-3 velocity monitor: P-AXIS-00439 warning and P-AXIS-00440 error at v_max * value / 1000",
+          "[drive]") {
+  AxisConfig axis = test::xyz_machine().axes[0];  // v_max 250, defaults 1050 / 1090
+  REQUIRE(axis.velocity_warning_limit() == Approx(262.5));
+  REQUIRE(axis.velocity_error_limit() == Approx(272.5));
+  DriveMonitor monitor(axis);
+  std::vector<Event> events;
+  DriveSample s = at_rest();
+  s.setpoint_velocity = s.velocity = 262;
+  CHECK(monitor.check(s, events).warnings == 0);
+  s.velocity = -263;
+  CHECK(monitor.check(s, events).warnings == monitor::velocity);
+  s.velocity = 273;
+  const MonitorState c = monitor.check(s, events);
+  CHECK(c.errors == monitor::velocity);
+  REQUIRE(events.size() == 2);
+  CHECK(events[0].parameter == "P-AXIS-00439");
+  CHECK(events[1].parameter == "P-AXIS-00440");
+  CHECK(events[1].severity == Severity::error);
+  CHECK(events[1].limit == Approx(272.5));
+}
+
+TEST_CASE("RIG-3 following error monitor: P-AXIS-00168 slep_max moving, P-AXIS-00169 slep_min at standstill",
+          "[drive]") {
+  AxisConfig axis = test::xyz_machine().axes[0];
+  REQUIRE(axis.following_error_monitoring == 4);  // set by slep_max in the machine file
+  axis.slep_max = 0.5;
+  axis.slep_min = 0.05;
+  DriveMonitor monitor(axis);
+  std::vector<Event> events;
+  DriveSample s = at_rest();
+  s.setpoint_velocity = 100;
+  s.following_error = 0.4;
+  CHECK(monitor.check(s, events).errors == 0);  // moving: 0.4 <= slep_max
+  s.setpoint_velocity = 0;
+  s.following_error = -0.06;
+  CHECK(monitor.check(s, events).errors == monitor::following_error);  // at standstill: > slep_min
+  REQUIRE(events.size() == 1);
+  CHECK(events[0].parameter == "P-AXIS-00169");
+  CHECK(events[0].limit == 0.05);
+  s.following_error = 0;
+  monitor.check(s, events);
+  s.setpoint_velocity = 100;
+  s.following_error = 0.51;
+  monitor.check(s, events);
+  REQUIRE(events.size() == 2);
+  CHECK(events[1].parameter == "P-AXIS-00168");
+  CHECK(events[1].value == 0.51);
+  axis.following_error_monitoring = 0;  // off
+  DriveMonitor off(axis);
+  CHECK(off.check(s, events).errors == 0);
+}
+
+TEST_CASE("RIG-3 software limit switches: setpoint on P-AXIS-00177/00178, actual widened by P-AXIS-00179",
+          "[drive]") {
+  AxisConfig axis = test::xyz_machine().axes[0];
+  axis.software_limits = true;
+  axis.swe_neg = -10;
+  axis.swe_pos = 300;
+  axis.swe_toleranz = 0.1;
+  DriveMonitor monitor(axis);
+  std::vector<Event> events;
+  DriveSample s = at_rest();
+  s.setpoint_position = 300;
+  s.position = 300.1;  // within the tolerance
+  CHECK(monitor.check(s, events).errors == 0);
+  s.position = 300.11;
+  CHECK(monitor.check(s, events).errors == monitor::software_limit);
+  REQUIRE(events.size() == 1);
+  CHECK(events[0].parameter == "P-AXIS-00178");
+  CHECK(events[0].limit == Approx(300.1));
+  monitor.check(at_rest(), events);  // back inside: the excursion ends
+  s.setpoint_position = s.position = -10.001;  // the setpoint is checked without tolerance
+  monitor.check(s, events);
+  REQUIRE(events.size() == 2);
+  CHECK(events[1].parameter == "P-AXIS-00177");
+  CHECK(events[1].limit == -10);
+  CHECK_THAT(events[1].message, Catch::Contains("setpoint"));
 }

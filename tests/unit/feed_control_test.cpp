@@ -133,3 +133,45 @@ TEST_CASE("KRN-3 override and feed hold changed at random moments keep every axi
     require_within_limits(checker);
   }
 }
+
+TEST_CASE("RIG-3 a drive error stops the channel on the path, jerk-limited, with the channel error on the HLI",
+          "[feed_control]") {
+  const MachineConfig m = test::xyz_machine();
+  for (int64_t error_at : {300, 1000}) {  // on the line at full feed, on the arc
+    INFO("drive error at cycle " << error_at);
+    Channel channel(m, contour);
+    logger::LimitChecker checker(m);
+    int64_t k_error = -1;
+    double v_at_error = 0;
+    const int64_t end = run_program(channel, &checker, [&](int64_t k, const HliState& s, HliControl& c) {
+      CHECK(on_contour(channel.setpoints()[0].position, channel.setpoints()[1].position));
+      if (k == error_at) {
+        v_at_error = s.path_velocity;
+        channel.drive_error("X", "acceleration P-AXIS-00442");
+        k_error = k;
+      }
+      if (k_error >= 0 && k > k_error) {
+        CHECK(s.channel_state == ChannelState::error);
+        CHECK((s.stop_conditions_r & stop_condition::channel_error) != 0);
+        c.feedhold = {false, true};  // neither releasing feed hold nor a new start restarts it
+        c.program_start = {k == k_error + 5, true};
+      }
+    });
+    REQUIRE(v_at_error > 10);
+    REQUIRE(channel.finished());
+    CHECK(channel.hli().channel_state == ChannelState::error);
+    CHECK(channel.hli().path_velocity == 0);
+    CHECK(channel.hli().block_nr_r < 30);  // aborted before the last block
+    // Stopped as fast as the path limits allow: from 50 mm/s without an
+    // acceleration plateau, 2 sqrt(v / j) with the path jerk at j_max / 2
+    // (the jerk share of the corner rule), plus the cycles to notice it.
+    CHECK(end - k_error <= std::ceil(2 * std::sqrt(v_at_error / (0.5 * m.axes[0].j_max)) / m.cycle_time_s()) + 3);
+    const auto events = channel.take_events();
+    bool reported = false;
+    for (const Event& e : events)
+      reported = reported || (e.severity == Severity::error && e.axis == "X" &&
+                              e.message.find("P-AXIS-00442") != std::string::npos);
+    CHECK(reported);
+    require_within_limits(checker);
+  }
+}

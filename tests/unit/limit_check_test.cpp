@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 
 #include "limit_check.hpp"
 #include "test_machine.hpp"
@@ -29,7 +30,7 @@ TEST_CASE("RIG-4 limit check: violations name time, axis, quantity, value and li
   LimitChecker checker(m);
   // A velocity step of Y at cycle 10: 300 mm/s from there on.
   for (int64_t k = 0; k < 20; ++k) checker.add_setpoint(1, k, k < 10 ? 0.0 : 0.3 * (k - 9));
-  checker.add_actual(2, 7, 0, 3500, 0.6);  // Z: 00442 limit 3000, FE limit 0.5
+  checker.add_actual(2, 7, 0, 0, 3500, 0.6);  // Z: 00442 limit 3000, FE limit 0.5
   const CheckReport r = checker.finish();
   REQUIRE_FALSE(r.passed());
   bool velocity = false, acceleration = false, jerk = false, actual = false, fe = false;
@@ -75,7 +76,7 @@ TEST_CASE("RIG-4 limit check: consecutive violating cycles are one episode with 
   const MachineConfig m = test::xyz_machine();  // X: P-AXIS-00442 limit 4000
   LimitChecker checker(m);
   const double overload[] = {0, 4100, 4300, -4200, 0, 0, 4050, 0};  // two episodes
-  for (int64_t k = 0; k < 8; ++k) checker.add_actual(0, k, 0, overload[k], 0);
+  for (int64_t k = 0; k < 8; ++k) checker.add_actual(0, k, 0, 0, overload[k], 0);
   const CheckReport r = checker.finish();
   REQUIRE(r.violations.size() == 2);
   CHECK(r.violations[0].cycles == 3);
@@ -85,4 +86,29 @@ TEST_CASE("RIG-4 limit check: consecutive violating cycles are one episode with 
   CHECK(r.violations[0].worst_time_s == Approx(0.002));
   CHECK(r.violations[1].cycles == 1);
   CHECK(r.violations[1].value == 4050);
+}
+
+TEST_CASE("RIG-4 limit check: actual velocity (P-AXIS-00440) and software limit switches (P-AXIS-00177/00178)",
+          "[check]") {
+  MachineConfig m = test::xyz_machine();  // X: v_max 250, P-AXIS-00440 1090 -> 272.5
+  m.axes[0].software_limits = true;
+  m.axes[0].swe_neg = -1;
+  m.axes[0].swe_pos = 10;
+  m.axes[0].swe_toleranz = 0.1;
+  LimitChecker checker(m);
+  for (int64_t k = 0; k < 30; ++k) checker.add_setpoint(0, k, 0.5 * k);  // beyond 10 from cycle 21 on
+  checker.add_actual(0, 3, 0, 273, 0, 0);
+  checker.add_actual(0, 4, 10.05, 0, 0, 0);  // within swe_pos + swe_toleranz
+  checker.add_actual(0, 5, -1.2, 0, 0, 0);
+  const CheckReport r = checker.finish();
+  std::map<std::string, Violation> found;
+  for (const Violation& v : r.violations) found[v.quantity] = v;
+  REQUIRE(found.count("actual velocity (P-AXIS-00440 limit)"));
+  CHECK(found["actual velocity (P-AXIS-00440 limit)"].limit == Approx(272.5));
+  REQUIRE(found.count("commanded position (P-AXIS-00178 swe_pos)"));
+  CHECK(found["commanded position (P-AXIS-00178 swe_pos)"].time_s == Approx(0.021));
+  CHECK(found["commanded position (P-AXIS-00178 swe_pos)"].cycles == 9);
+  REQUIRE(found.count("actual position (P-AXIS-00177 swe_neg - P-AXIS-00179)"));
+  CHECK(found["actual position (P-AXIS-00177 swe_neg - P-AXIS-00179)"].limit == Approx(-1.1));
+  CHECK_FALSE(found.count("actual position (P-AXIS-00178 swe_pos + P-AXIS-00179)"));
 }

@@ -127,6 +127,34 @@ TEST_CASE("RIG-3 machine: P-AXIS-00441/00442 below 1000 (limit under a_max) are 
   CHECK_THROWS_WITH(parse_machine_config(YAML::Load("axes: []")), Catch::Contains("non-empty"));
 }
 
+TEST_CASE("RIG-3 machine: monitoring parameters P-AXIS-00439/00440, 00168/00169/00172, 00177/00178/00179",
+          "[scenario]") {
+  const std::string axis = "{name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002";
+  auto machine = [&](const std::string& extra) {
+    return parse_machine_config(YAML::Load("axes:\n  - " + axis + extra + "}\n")).axes.at(0);
+  };
+  const AxisConfig defaults = machine("");
+  CHECK(defaults.velocity_warning_limit() == Approx(105));
+  CHECK(defaults.velocity_error_limit() == Approx(109));
+  CHECK(defaults.following_error_monitoring == 0);
+  CHECK_FALSE(defaults.software_limits);
+  CHECK_THROWS_WITH(machine(", dyn_monitoring_v_warn: 50"), Catch::Contains("P-AXIS-00439"));
+  CHECK_THROWS_WITH(machine(", dyn_monitoring_v_err: 1000"), Catch::Contains("P-AXIS-00440"));
+  const AxisConfig fe = machine(", slep_max: 0.5, slep_min: 0.1");
+  CHECK(fe.following_error_monitoring == 4);
+  CHECK(fe.slep_min == 0.1);
+  CHECK(machine(", slep_max: 0.5").slep_min == 0.5);
+  CHECK(machine(", slep_max: 0.5, following_error_monitoring: 0").following_error_monitoring == 0);
+  CHECK_THROWS_WITH(machine(", slep_max: 0.5, following_error_monitoring: 1"), Catch::Contains("P-AXIS-00172"));
+  CHECK_THROWS_WITH(machine(", following_error_monitoring: 4"), Catch::Contains("P-AXIS-00168"));
+  const AxisConfig swe = machine(", swe_neg: -5, swe_pos: 500");
+  CHECK(swe.software_limits);
+  CHECK(swe.swe_toleranz == 0.1);
+  CHECK_THROWS_WITH(machine(", swe_pos: 500"), Catch::Contains("P-AXIS-00177"));
+  CHECK_THROWS_WITH(machine(", swe_neg: 5, swe_pos: 5"), Catch::Contains("P-AXIS-00177 swe_neg must be below"));
+  CHECK_THROWS_WITH(machine(", swe_neg: -5, swe_pos: 5, swe_toleranz: -1"), Catch::Contains("P-AXIS-00179"));
+}
+
 TEST_CASE("RIG-5 scenario: expected events match by parameter, ID and NC line; absent ones must not appear",
           "[scenario]") {
   const Scenario s = scenario(R"(
