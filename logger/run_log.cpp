@@ -45,6 +45,7 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       try {
         log.scenario = parse_scenario(YAML::Load(m.scenario_yaml));
         checker = std::make_unique<LimitChecker>(log.scenario->machine);
+        log.axes.assign(log.scenario->machine.axes.size(), {});
       } catch (const std::exception& ex) {
         throw std::runtime_error(path + ": manifest does not hold a valid scenario: " + ex.what());
       }
@@ -61,6 +62,11 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       hil::hli_state_t m;
       if (!decode(*e, m)) { ++log.undecodable; continue; }
       log.last_cycle = std::max(log.last_cycle, m.cycle);
+      log.hli.cycle.push_back(m.cycle);
+      log.hli.path_velocity.push_back(m.path_velocity);
+      log.hli.dist_prog_start_mm.push_back(m.dist_prog_start / hli_units_per_mm);
+      log.hli.block_nr_r.push_back(m.block_nr_r);
+      log.hli.channel_state.push_back(m.channel_state);
     } else if (e->channel == channels::participant) {
       hil::participant_t m;
       if (!decode(*e, m)) { ++log.undecodable; continue; }
@@ -73,10 +79,21 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
         hil::axis_setpoint_t m;
         if (!decode(*e, m)) { ++log.undecodable; continue; }
         checker->add_setpoint(axis, m.cycle, m.position);
+        AxisTrace& t = log.axes[axis];
+        t.cmd_cycle.push_back(m.cycle);
+        t.cmd_position.push_back(m.position);
+        t.cmd_velocity.push_back(m.velocity);
+        t.cmd_acceleration.push_back(m.acceleration);
       } else if (ends_with(e->channel, "_STATE")) {
         hil::axis_state_t m;
         if (!decode(*e, m)) { ++log.undecodable; continue; }
         checker->add_actual(axis, m.cycle, m.position, m.velocity, m.acceleration, m.following_error);
+        AxisTrace& t = log.axes[axis];
+        t.act_cycle.push_back(m.cycle);
+        t.act_position.push_back(m.position);
+        t.act_velocity.push_back(m.velocity);
+        t.act_acceleration.push_back(m.acceleration);
+        t.following_error.push_back(m.following_error);
       }
     }
   }

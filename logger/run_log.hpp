@@ -19,6 +19,22 @@ struct LoggedEvent {
   Event event;
 };
 
+// One axis over the run, for plots: the CNC's setpoints and the drive's answers.
+struct AxisTrace {
+  std::vector<int64_t> cmd_cycle;
+  std::vector<double> cmd_position, cmd_velocity, cmd_acceleration;
+  std::vector<int64_t> act_cycle;
+  std::vector<double> act_position, act_velocity, act_acceleration, following_error;
+};
+
+// The HLI signals people look at, per cycle.
+struct HliTrace {
+  std::vector<int64_t> cycle;
+  std::vector<double> path_velocity, dist_prog_start_mm;
+  std::vector<int64_t> block_nr_r;
+  std::vector<int> channel_state;
+};
+
 struct RunLog {
   std::optional<Scenario> scenario;  // from HIL_MANIFEST
   std::string rig_version;
@@ -27,6 +43,8 @@ struct RunLog {
   int64_t last_cycle = -1;
   bool run_end_seen = false;
   int64_t undecodable = 0;  // messages that did not decode as their channel's type
+  std::vector<AxisTrace> axes;  // in the manifest's axis order
+  HliTrace hli;
 };
 
 // Reads `path`; feeds the axis traces into a LimitChecker built from the

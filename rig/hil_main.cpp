@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "config_error.hpp"
+#include "plots.hpp"
 #include "report.hpp"
 #include "run_log.hpp"
 #include "run_scenario.hpp"
@@ -18,7 +19,7 @@ std::string own_directory() {
   return ec ? std::string(".") : exe.parent_path().string();
 }
 
-int check_log(const std::string& path) {
+int check_log(const std::string& path, const std::string& plot_dir) {
   std::optional<hil::logger::CheckReport> check;
   const hil::logger::RunLog log = hil::logger::read_run_log(path, &check);
   if (!check) {
@@ -28,6 +29,7 @@ int check_log(const std::string& path) {
   std::cout << "log " << path << ": " << (log.scenario ? log.scenario->name : "?") << ", "
             << log.last_cycle + 1 << " cycles\n"
             << hil::rig::format_check(log, *check);
+  if (!plot_dir.empty()) std::cout << hil::rig::draw_plots(log, *check, plot_dir) << '\n';
   const bool passed = check->passed() && log.undecodable == 0;
   std::cout << (passed ? "CHECK PASSED" : "CHECK FAILED") << '\n';
   return passed ? 0 : 1;
@@ -51,6 +53,8 @@ int main(int argc, char** argv) {
   std::string log_file;
   auto* check_cmd = app.add_subcommand("check", "check a recorded log against the limits in its manifest");
   check_cmd->add_option("log", log_file, "LCM event log")->required()->check(CLI::ExistingFile);
+  std::string plot_dir;
+  check_cmd->add_option("--plots", plot_dir, "also draw the PNG plots (gnuplot) into this folder");
 
   std::vector<std::string> pair;
   auto* compare_cmd = app.add_subcommand("compare", "compare two logs message by message (determinism)");
@@ -63,7 +67,7 @@ int main(int argc, char** argv) {
       std::cout << result.report;
       return result.passed ? 0 : 1;
     }
-    if (*check_cmd) return check_log(log_file);
+    if (*check_cmd) return check_log(log_file, plot_dir);
     if (*compare_cmd) {
       const std::string difference = hil::logger::compare_run_logs(pair[0], pair[1]);
       std::cout << (difference.empty() ? "identical" : difference) << '\n';

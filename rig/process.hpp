@@ -11,7 +11,7 @@ namespace hil::rig {
 
 class Process {
  public:
-  // Starts argv[0] with its stdout and stderr appended to output_file.
+  // Starts argv[0] (a path, or a name on PATH) with its stdout and stderr appended to output_file.
   Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file);
   Process(const Process&) = delete;
   Process& operator=(const Process&) = delete;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "config_error.hpp"
+#include "plots.hpp"
 #include "process.hpp"
 #include "report.hpp"
 #include "run_log.hpp"
@@ -128,7 +129,7 @@ RunResult run_scenario(const RunOptions& options) {
       << " x real time)\n"
       << "exit status: " << processes.str() << (log.run_end_seen ? "" : "; no RUN_END in the log") << '\n'
       << "expectations (plc_sim): " << expectations_passed << " passed, " << expectations_failed << " failed\n";
-  if (check) out << format_check(log, *check) << violations_expected.str();
+  if (check) out << format_check(log, *check) << violations_expected.str() << draw_plots(log, *check, (dir / "plots").string()) << '\n';
   else out << "offline check: the log has no manifest\n";
   result.report = out.str();
   std::ofstream(dir / "report.txt") << result.report;

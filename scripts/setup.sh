@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages="build-essential cmake pkg-config iproute2 util-linux
   liblcm-dev liblcm-bin liblcm-java libjchart2d-java default-jdk-headless
-  libeigen3-dev libspdlog-dev catch2 libcli11-dev libyaml-cpp-dev"
+  libeigen3-dev libspdlog-dev catch2 libcli11-dev libyaml-cpp-dev gnuplot-nox"
 
 missing=""
 for p in $packages; do

@@ -17,3 +17,10 @@ done
 expect_status 1 "$hil" check "$WORK/acceleration_overload/run.lcmlog"
 expect_output "CHECK FAILED"
 expect_output "actual acceleration (P-AXIS-00442 limit)"
+# The plots: written by hil run, and by hil check --plots.
+for png in axis_X.png path.png; do
+  [ -s "$WORK/acceleration_overload/plots/$png" ] || fail "hil run drew no plots/$png"
+done
+expect_status 1 "$hil" check "$WORK/acceleration_overload/run.lcmlog" --plots "$WORK/check_plots"
+expect_output "plots: $WORK/check_plots/ (axis_X.png, path.png)"
+[ -s "$WORK/check_plots/axis_X.png" ] || fail "hil check --plots drew no axis_X.png"

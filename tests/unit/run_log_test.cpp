@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "channels.hpp"
+#include "plot_export.hpp"
 #include "run_log.hpp"
 
 using namespace hil;
@@ -100,5 +101,28 @@ TEST_CASE("RIG-4 run log: a file that is not an LCM log is an error, not a crash
   std::ofstream(path) << "this is not an LCM log";
   CHECK_THROWS(logger::read_run_log(path));
   CHECK_THROWS(logger::read_run_log(temp_path("does_not_exist")));
+  std::remove(path.c_str());
+}
+
+TEST_CASE("RIG-4 plots: the traces and a gnuplot script with limit lines and shaded violations", "[log]") {
+  const std::string path = temp_path("plot.lcmlog"), dir = temp_path("plots");
+  write_log(path, 300, false);  // X v_max is 250: a violation from cycle 1 on
+  std::optional<logger::CheckReport> report;
+  const logger::RunLog log = logger::read_run_log(path, &report);
+  REQUIRE(log.axes.size() == 3);
+  CHECK(log.axes[0].cmd_cycle.size() == 100);
+  const logger::PlotFiles files = logger::write_plot_files(log, *report, dir);
+  REQUIRE(files.images.size() == 4);  // axis_X, axis_Y, axis_Z, path
+  CHECK(std::filesystem::path(files.images[0]).filename() == "axis_X.png");
+  std::ifstream script(files.script);
+  const std::string text((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
+  CHECK_THAT(text, Catch::Contains("set object 1 rect from 0.0005, graph 0"));  // the violation, shaded
+  CHECK_THAT(text, Catch::Contains("4000.000000 w l dt 2 lc rgb \"red\" t \"P-AXIS-00442\""));
+  CHECK_THAT(text, Catch::Contains("set output \"path.png\""));
+  std::ifstream data(dir + "/axis_X.tsv");
+  int lines = 0;
+  for (std::string line; std::getline(data, line);) lines += line[0] == '#' ? 0 : 1;
+  CHECK(lines == 100);
+  std::filesystem::remove_all(dir);
   std::remove(path.c_str());
 }
