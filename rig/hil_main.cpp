@@ -10,6 +10,7 @@
 #include "report.hpp"
 #include "run_log.hpp"
 #include "run_scenario.hpp"
+#include "tools.hpp"
 
 namespace {
 
@@ -60,7 +61,30 @@ int main(int argc, char** argv) {
   auto* compare_cmd = app.add_subcommand("compare", "compare two logs message by message (determinism)");
   compare_cmd->add_option("logs", pair, "two LCM event logs")->required()->expected(2)->check(CLI::ExistingFile);
 
+  std::string spy_source = hil::rig::default_lcm_url;
+  double speed = 1.0;
+  auto* spy_cmd = app.add_subcommand("spy", "lcm-spy with every rig type decodable, live or on a log (RIG-7)");
+  spy_cmd->add_option("source", spy_source, "a rig's LCM URL (hil run prints it) or a log file")
+      ->capture_default_str();
+  spy_cmd->add_option("--speed", speed, "playback speed of a log file (1 = as recorded)")
+      ->check(CLI::PositiveNumber);
+
+  std::string replay_url = hil::rig::default_lcm_url;
+  auto* replay_cmd = app.add_subcommand("replay", "play a log onto an LCM URL with lcm-logplayer (RIG-7)");
+  replay_cmd->add_option("log", log_file, "LCM event log")->required()->check(CLI::ExistingFile);
+  replay_cmd->add_option("--url", replay_url, "where to play it (watch it there with hil spy URL)")
+      ->capture_default_str();
+  replay_cmd->add_option("--speed", speed, "1 = as recorded, 2 = twice as fast")->check(CLI::PositiveNumber);
+
+  auto* rerun_cmd = app.add_subcommand(
+      "rerun", "feed the PLC inputs of a recorded run into this CNC build in lock-step; report the first "
+               "difference or 'identical' (RIG-7)");
+  rerun_cmd->add_option("log", log_file, "LCM event log of a rig run")->required()->check(CLI::ExistingFile);
+
   CLI11_PARSE(app, argc, argv);
+  if (*spy_cmd) return hil::rig::exec_spy(run.bin_dir, spy_source, speed);
+  if (*replay_cmd) return hil::rig::exec_replay(log_file, replay_url, speed);
+  if (*rerun_cmd) return hil::rig::exec_rerun(run.bin_dir, log_file);
   try {
     if (*run_cmd) {
       const hil::rig::RunResult result = hil::rig::run_scenario(run);

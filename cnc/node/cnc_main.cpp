@@ -1,7 +1,6 @@
 // The `cnc` node (RIG-1): the clock master. Each cycle it runs the channel,
 // publishes setpoints and the HLI state, and in lock-step waits for every
 // axis and the PLC to answer that cycle before the next (RIG-6).
-#include <hil/axis_setpoint_t.hpp>
 #include <hil/axis_state_t.hpp>
 #include <hil/participant_t.hpp>
 #include <hil/run_manifest_t.hpp>
@@ -10,10 +9,13 @@
 
 #include <chrono>
 #include <cmath>
+#include <iostream>
 #include <set>
 
 #include "channel.hpp"
 #include "channels.hpp"
+#include "cycle_messages.hpp"
+#include "rerun.hpp"
 #include "messages.hpp"
 #include "node_options.hpp"
 #include "participant.hpp"
@@ -81,8 +83,10 @@ class CncNode {
     HliControl control;  // the PLC's answer to the previous cycle
     for (;; ++k) {
       channel_.step(k, control);
-      for (const Event& e : channel_.take_events()) publish_event(e, k);
-      publish_cycle(k);
+      const std::vector<Event> events = channel_.take_events();
+      for (const Event& e : events) log_event(e);
+      for (const auto& m : cnc_node::cycle_messages(channel_, machine_, events, k))
+        lcm_.publish(m.channel, m.bytes.data(), static_cast<unsigned>(m.bytes.size()));
       if (!wait_for_answers(k)) {
         status = 3;
         break;
@@ -144,27 +148,14 @@ class CncNode {
     lcm_.publish(channels::manifest, &m);
   }
 
-  void publish_event(const Event& e, int64_t k) {
+  static void log_event(const Event& e) {
     spdlog::log(e.severity == Severity::error ? spdlog::level::err : spdlog::level::warn, "{}", describe(e));
-    const hil::event_t m = lcm_support::to_message(e, k, k * machine_.cycle_time_us, "cnc");
-    lcm_.publish(channels::event, &m);
   }
 
-  void publish_cycle(int64_t k) {
-    const int64_t utime = k * machine_.cycle_time_us;
-    const auto& setpoints = channel_.setpoints();
-    for (size_t i = 0; i < setpoints.size(); ++i) {
-      hil::axis_setpoint_t m;
-      m.utime = utime;
-      m.cycle = k;
-      m.axis = machine_.axes[i].name;
-      m.position = setpoints[i].position;
-      m.velocity = setpoints[i].velocity;
-      m.acceleration = setpoints[i].acceleration;
-      lcm_.publish(channels::axis_command(m.axis), &m);
-    }
-    const hil::hli_state_t hli = lcm_support::to_message(channel_.hli(), utime);
-    lcm_.publish(channels::hli_state, &hli);
+  void publish_event(const Event& e, int64_t k) {
+    log_event(e);
+    const auto m = cnc_node::event_message(e, machine_, k);
+    lcm_.publish(m.channel, m.bytes.data(), static_cast<unsigned>(m.bytes.size()));
   }
 
   bool wait_for_answers(int64_t k) {
@@ -214,7 +205,21 @@ int main(int argc, char** argv) {
                  "nodes to wait for before cycle 0 (default: every axis_sim, plc_sim, logger)");
   int answer_timeout_ms = 5000;
   app.add_option("--answer-timeout-ms", answer_timeout_ms, "lock-step watchdog per cycle")->check(CLI::PositiveNumber);
+  std::string rerun_log;
+  app.add_option("--rerun", rerun_log,
+                 "instead of a live run: feed the PLC inputs recorded in this log into this build in lock-step "
+                 "and report the first difference (RIG-7)")
+      ->check(CLI::ExistingFile);
+  // A rerun needs neither a scenario file nor a rig: the log has both.
+  app.get_option("--scenario")->required(false)->excludes("--rerun");
+  app.get_option("--url")->required(false)->excludes("--rerun");
   CLI11_PARSE(app, argc, argv);
+  if (rerun_log.empty() && (options.scenario_file.empty() || options.url.empty())) {
+    std::cerr << "cnc: --scenario and --url are required (or --rerun LOG)\n";
+    return 2;
+  }
+  if (!rerun_log.empty())
+    return hil::lcm_support::guarded_main("cnc", [&] { return hil::cnc_node::rerun(rerun_log, std::cout); });
   return hil::lcm_support::guarded_main("cnc", [&] {
     const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
     if (participants.empty()) {

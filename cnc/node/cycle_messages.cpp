@@ -1,0 +1,44 @@
+#include "cycle_messages.hpp"
+
+#include <hil/axis_setpoint_t.hpp>
+
+#include "channels.hpp"
+#include "messages.hpp"
+
+namespace hil::cnc_node {
+namespace {
+
+template <typename T>
+EncodedMessage encoded(const std::string& channel, const T& message) {
+  EncodedMessage out{channel, std::vector<uint8_t>(message.getEncodedSize())};
+  message.encode(out.bytes.data(), 0, static_cast<int>(out.bytes.size()));
+  return out;
+}
+
+}  // namespace
+
+EncodedMessage event_message(const Event& event, const MachineConfig& machine, int64_t cycle) {
+  return encoded(channels::event, lcm_support::to_message(event, cycle, cycle * machine.cycle_time_us, "cnc"));
+}
+
+std::vector<EncodedMessage> cycle_messages(const cnc::Channel& channel, const MachineConfig& machine,
+                                           const std::vector<Event>& events, int64_t cycle) {
+  std::vector<EncodedMessage> out;
+  for (const Event& e : events) out.push_back(event_message(e, machine, cycle));
+  const int64_t utime = cycle * machine.cycle_time_us;
+  const auto& setpoints = channel.setpoints();
+  for (size_t i = 0; i < setpoints.size(); ++i) {
+    hil::axis_setpoint_t m;
+    m.utime = utime;
+    m.cycle = cycle;
+    m.axis = machine.axes[i].name;
+    m.position = setpoints[i].position;
+    m.velocity = setpoints[i].velocity;
+    m.acceleration = setpoints[i].acceleration;
+    out.push_back(encoded(channels::axis_command(m.axis), m));
+  }
+  out.push_back(encoded(channels::hli_state, lcm_support::to_message(channel.hli(), utime)));
+  return out;
+}
+
+}  // namespace hil::cnc_node

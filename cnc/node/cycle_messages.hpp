@@ -1,0 +1,25 @@
+#pragma once
+// What the CNC publishes for one cycle, encoded: its events, one setpoint
+// per axis, the HLI state (RIG-1). One place, so that the live node and
+// `cnc --rerun` produce the same bytes.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "channel.hpp"
+#include "machine_config.hpp"
+
+namespace hil::cnc_node {
+
+struct EncodedMessage {
+  std::string channel;
+  std::vector<uint8_t> bytes;
+};
+
+std::vector<EncodedMessage> cycle_messages(const cnc::Channel& channel, const MachineConfig& machine,
+                                           const std::vector<Event>& events, int64_t cycle);
+
+// An event of the CNC, encoded for HIL_EVENT.
+EncodedMessage event_message(const Event& event, const MachineConfig& machine, int64_t cycle);
+
+}  // namespace hil::cnc_node

@@ -1,0 +1,155 @@
+#include "rerun.hpp"
+
+#include <hil/axis_setpoint_t.hpp>
+#include <hil/axis_state_t.hpp>
+#include <hil/event_t.hpp>
+#include <hil/hli_control_t.hpp>
+#include <hil/hli_state_t.hpp>
+#include <hil/run_manifest_t.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include <cmath>
+#include <deque>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "channel.hpp"
+#include "channels.hpp"
+#include "cycle_messages.hpp"
+#include "messages.hpp"
+#include "scenario.hpp"
+
+namespace hil::cnc_node {
+namespace {
+
+template <typename T>
+bool decode(const void* data, size_t size, T& message) {
+  return message.decode(data, 0, static_cast<int>(size)) == static_cast<int>(size);
+}
+
+// What the recorded run holds: the inputs to replay and the outputs to match.
+struct Recording {
+  std::optional<Scenario> scenario;
+  std::map<int64_t, HliControl> controls;                // by the cycle they answer
+  std::map<int64_t, std::vector<int32_t>> drive_errors;  // by cycle, per axis
+  std::map<std::string, std::deque<std::string>> outputs;  // the CNC's messages per channel
+};
+
+Recording read_recording(const std::string& path) {
+  lcm::LogFile file(path, "r");
+  if (!file.good()) throw std::runtime_error("cannot open LCM log " + path);
+  Recording r;
+  while (const lcm::LogEvent* e = file.readNextEvent()) {
+    const std::string& ch = e->channel;
+    const size_t n = static_cast<size_t>(e->datalen);
+    if (ch == channels::manifest) {
+      hil::run_manifest_t m;
+      if (decode(e->data, n, m)) r.scenario = parse_scenario(YAML::Load(m.scenario_yaml));
+    } else if (ch == channels::hli_control) {
+      hil::hli_control_t m;
+      if (decode(e->data, n, m)) r.controls[m.cycle] = lcm_support::from_message(m);
+    } else if (r.scenario && ch.rfind("AXIS_", 0) == 0 && ch.size() > 6 &&
+               ch.compare(ch.size() - 6, 6, "_STATE") == 0) {
+      hil::axis_state_t m;
+      const int axis = r.scenario->machine.axis_index(ch.substr(5, ch.size() - 11));
+      if (axis < 0 || !decode(e->data, n, m)) continue;
+      auto& errors = r.drive_errors[m.cycle];
+      errors.resize(r.scenario->machine.axes.size(), 0);
+      errors[axis] = m.errors;
+    } else if (ch == channels::hli_state || (ch.rfind("AXIS_", 0) == 0 && ch.size() > 4 &&
+                                             ch.compare(ch.size() - 4, 4, "_CMD") == 0)) {
+      r.outputs[ch].emplace_back(static_cast<const char*>(e->data), n);
+    } else if (ch == channels::event) {
+      hil::event_t m;
+      if (decode(e->data, n, m) && m.source == "cnc") r.outputs[ch].emplace_back(static_cast<const char*>(e->data), n);
+    }
+  }
+  if (!r.scenario) throw std::runtime_error(path + ": no manifest (HIL_MANIFEST): nothing to rerun");
+  return r;
+}
+
+// The fields that differ, for people.
+std::string describe_difference(const std::string& channel, const std::string& recorded, const std::string& now) {
+  std::ostringstream o;
+  o.precision(12);
+  if (channel == channels::hli_state) {
+    hil::hli_state_t a, b;
+    if (decode(recorded.data(), recorded.size(), a) && decode(now.data(), now.size(), b))
+      o << "recorded channel_state " << int(a.channel_state) << " block_nr_r " << a.block_nr_r << " dist_prog_start "
+        << a.dist_prog_start << " path_velocity " << a.path_velocity << "; this build " << int(b.channel_state)
+        << " " << b.block_nr_r << " " << b.dist_prog_start << " " << b.path_velocity;
+  } else if (channel == channels::event) {
+    hil::event_t a, b;
+    if (decode(recorded.data(), recorded.size(), a) && decode(now.data(), now.size(), b))
+      o << "recorded \"" << a.message << "\"; this build \"" << b.message << "\"";
+  } else {
+    hil::axis_setpoint_t a, b;
+    if (decode(recorded.data(), recorded.size(), a) && decode(now.data(), now.size(), b))
+      o << "recorded position " << a.position << " velocity " << a.velocity << " acceleration " << a.acceleration
+        << "; this build " << b.position << " " << b.velocity << " " << b.acceleration << " (mm, mm/s, mm/s^2)";
+  }
+  return o.str();
+}
+
+}  // namespace
+
+int rerun(const std::string& log_path, std::ostream& out) {
+  Recording rec = read_recording(log_path);
+  const Scenario& scenario = *rec.scenario;
+  const MachineConfig& machine = scenario.machine;
+  cnc::Channel channel(machine, scenario.nc_program);
+  const double dt = machine.cycle_time_s();
+  const int64_t settle_cycles = std::llround(scenario.settle_time_s / dt);
+  const int64_t max_cycles = std::llround(scenario.max_time_s / dt);
+  int64_t compared = 0, finished_at = -1, k = 0;
+  HliControl control;
+  // The same loop as the live node (cnc_main.cpp), with the recording in
+  // place of the PLC and the drives.
+  auto matches = [&](const EncodedMessage& m) {
+    auto& queue = rec.outputs[m.channel];
+    const std::string now(m.bytes.begin(), m.bytes.end());
+    if (queue.empty()) {
+      out << "differs at cycle " << k << ": " << m.channel << ": this build publishes a message the recorded run has not\n";
+      return false;
+    }
+    if (queue.front() != now) {
+      out << "differs at cycle " << k << ": " << m.channel << ": "
+          << describe_difference(m.channel, queue.front(), now) << '\n';
+      return false;
+    }
+    queue.pop_front();
+    ++compared;
+    return true;
+  };
+  for (;; ++k) {
+    if (k > 0) {
+      if (const auto c = rec.controls.find(k - 1); c != rec.controls.end()) control = c->second;
+      if (const auto e = rec.drive_errors.find(k - 1); e != rec.drive_errors.end())
+        for (size_t i = 0; i < e->second.size(); ++i)
+          if (e->second[i]) channel.drive_error(machine.axes[i].name, lcm_support::monitor_names(e->second[i]));
+    }
+    channel.step(k, control);
+    for (const auto& m : cycle_messages(channel, machine, channel.take_events(), k))
+      if (!matches(m)) return 1;
+    if (channel.finished() && finished_at < 0) finished_at = k;
+    if (finished_at >= 0 && k - finished_at >= settle_cycles) break;
+    if (k >= max_cycles) {
+      Event e;
+      e.message = "run exceeded run.max_time_s = " + std::to_string(scenario.max_time_s) +
+                  " s of simulated time; stopped";
+      if (!matches(event_message(e, machine, k))) return 1;
+      break;
+    }
+  }
+  for (const auto& [name, queue] : rec.outputs)
+    if (!queue.empty()) {
+      out << "differs: this build ended after cycle " << k << ", the recorded run has " << queue.size()
+          << " more message(s) on " << name << '\n';
+      return 1;
+    }
+  out << "identical: " << k + 1 << " cycles, " << compared << " messages of the CNC (setpoints, HLI state, events)\n";
+  return 0;
+}
+
+}  // namespace hil::cnc_node
