@@ -41,6 +41,21 @@ AxisConfig parse_axis(const YAML::Node& node, size_t index) {
   auto integer = [&](const char* key, int32_t& value) {
     if (node[key]) value = node[key].as<int32_t>();
   };
+  auto at_least_zero = [&](const char* key, double& value) {
+    if (!node[key]) return;
+    value = node[key].as<double>();
+    if (!(value >= 0) || !std::isfinite(value)) throw ConfigError(at + ": '" + key + "' must be >= 0");
+  };
+  integer("velocity_loop_order", axis.velocity_loop_order);
+  if (axis.velocity_loop_order != 1 && axis.velocity_loop_order != 2)
+    throw ConfigError(at + ": 'velocity_loop_order' must be 1 or 2");
+  if (node["velocity_damping"]) axis.velocity_damping = positive(node, "velocity_damping", at);
+  at_least_zero("velocity_feedforward", axis.velocity_feedforward);
+  if (axis.velocity_feedforward > 1) throw ConfigError(at + ": 'velocity_feedforward' must be within 0 .. 1");
+  if (node["drive_acceleration_limit"])
+    axis.drive_acceleration_limit = positive(node, "drive_acceleration_limit", at);
+  at_least_zero("friction_coulomb", axis.friction_coulomb);
+  at_least_zero("friction_viscous", axis.friction_viscous);
   integer("dyn_monitoring_a_warn", axis.dyn_monitoring_a_warn);
   integer("dyn_monitoring_a_err", axis.dyn_monitoring_a_err);
   integer("dyn_monitoring_v_warn", axis.dyn_monitoring_v_warn);

@@ -15,7 +15,15 @@ struct AxisConfig {
   double a_max = 0;          // mm/s^2
   double j_max = 0;          // mm/s^3
   double kv = 0;             // 1/s, position loop gain (P-AXIS-00099 style)
-  double velocity_lag_s = 0; // s, velocity loop modelled as first-order lag
+  double velocity_lag_s = 0; // s, velocity loop time constant (T, or 1/omega for order 2)
+  // The drive model (RIG-3, axis_sim/drive_model.hpp); checked for a stable
+  // closed loop when a run starts.
+  int32_t velocity_loop_order = 1;        // 1: first-order lag, 2: second-order
+  double velocity_damping = 0.7;          // zeta of a second-order velocity loop
+  double velocity_feedforward = 1;        // 0 .. 1
+  double drive_acceleration_limit = 0;    // mm/s^2, torque limit / inertia; 0 = none
+  double friction_coulomb = 0;            // mm/s^2, friction force / inertia
+  double friction_viscous = 0;            // 1/s
   // P-AXIS-00441 / 00442 in units of 1/1000 of a_max: the monitoring limit is
   // a_max * value / 1000, as TF5200_lift_function.txt and SPEC RIG-3 write it
   // (see docs/UNITS.md). 1500 / 2000 mean 1.5 x and 2.0 x a_max.

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "config_error.hpp"
+#include "drive_model.hpp"
 #include "plots.hpp"
 #include "process.hpp"
 #include "report.hpp"
@@ -38,6 +39,13 @@ std::string rig_url(int port) {
 RunResult run_scenario(const RunOptions& options) {
   const Scenario scenario = load_scenario_file(options.scenario_file);
   plc::ScenarioEngine validate_timeline(scenario);  // refuses unknown HLI fields before anything starts
+  for (const AxisConfig& axis : scenario.machine.axes) {  // and drive models that would not be stable
+    try {
+      axis::DriveModel(axis::drive_parameters(axis, scenario.machine.cycle_time_s()));
+    } catch (const std::invalid_argument& e) {
+      throw ConfigError("machine: axis " + axis.name + ": " + e.what());
+    }
+  }
 
   RunResult result;
   result.run_dir = options.run_dir.empty() ? "runs/" + scenario.name + "-" + timestamp() : options.run_dir;

@@ -20,7 +20,7 @@ using namespace hil;
 class AxisSimNode {
  public:
   AxisSimNode(const AxisConfig& axis, double cycle_time_s, lcm::LCM& lcm)
-      : axis_(axis), lcm_(lcm), drive_({axis.kv, axis.velocity_lag_s, cycle_time_s}), monitor_(axis),
+      : axis_(axis), lcm_(lcm), drive_(axis::drive_parameters(axis, cycle_time_s)), monitor_(axis),
         source_("axis_sim " + axis.name) {
     lcm_.subscribeFunction(
            channels::axis_command(axis.name),

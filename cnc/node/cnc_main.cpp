@@ -15,10 +15,10 @@
 #include "channel.hpp"
 #include "channels.hpp"
 #include "cycle_messages.hpp"
-#include "rerun.hpp"
 #include "messages.hpp"
 #include "node_options.hpp"
 #include "participant.hpp"
+#include "rerun.hpp"
 #include "scenario.hpp"
 
 namespace {
@@ -93,7 +93,8 @@ class CncNode {
       }
       control = answers_.control;
       for (size_t i = 0; i < machine_.axes.size(); ++i)
-        if (answers_.axis_errors[i]) channel_.drive_error(machine_.axes[i].name, lcm_support::monitor_names(answers_.axis_errors[i]));
+        if (answers_.axis_errors[i])
+          channel_.drive_error(machine_.axes[i].name, lcm_support::monitor_names(answers_.axis_errors[i]));
       if (channel_.finished() && finished_at < 0) finished_at = k;
       if (finished_at >= 0 && k - finished_at >= settle_cycles) break;
       if (k >= max_cycles) {

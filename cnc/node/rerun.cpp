@@ -123,15 +123,14 @@ int rerun(const std::string& log_path, std::ostream& out) {
     return true;
   };
   for (;; ++k) {
-    if (k > 0) {
-      if (const auto c = rec.controls.find(k - 1); c != rec.controls.end()) control = c->second;
-      if (const auto e = rec.drive_errors.find(k - 1); e != rec.drive_errors.end())
-        for (size_t i = 0; i < e->second.size(); ++i)
-          if (e->second[i]) channel.drive_error(machine.axes[i].name, lcm_support::monitor_names(e->second[i]));
-    }
     channel.step(k, control);
     for (const auto& m : cycle_messages(channel, machine, channel.take_events(), k))
       if (!matches(m)) return 1;
+    // The answers to cycle k, taken where the live node takes them.
+    if (const auto c = rec.controls.find(k); c != rec.controls.end()) control = c->second;
+    if (const auto e = rec.drive_errors.find(k); e != rec.drive_errors.end())
+      for (size_t i = 0; i < e->second.size(); ++i)
+        if (e->second[i]) channel.drive_error(machine.axes[i].name, lcm_support::monitor_names(e->second[i]));
     if (channel.finished() && finished_at < 0) finished_at = k;
     if (finished_at >= 0 && k - finished_at >= settle_cycles) break;
     if (k >= max_cycles) {

@@ -13,3 +13,8 @@ expect_output "no_such_machine.yaml"
 printf 'not an LCM log\n' >"$WORK/not_a_log"
 expect_status 2 "$hil" check "$WORK/not_a_log"
 expect_output "not an LCM"
+
+# RIG-3: a drive model whose closed loop would be unstable is refused.
+printf 'name: x\nmachine:\n  axes:\n    - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 60, velocity_lag_s: 0.02, velocity_loop_order: 2, velocity_damping: 0.5}\nnc_program: "M30"\n' >"$WORK/unstable.yaml"
+expect_status 2 "$hil" run "$WORK/unstable.yaml" --out "$WORK/run3" --port 7742
+expect_output "axis X: drive model: the position loop is unstable"

@@ -45,14 +45,117 @@ TEST_CASE("RIG-3 drive model: with velocity feed-forward a ramp is followed with
   CHECK(out.velocity == Approx(v).epsilon(0.01));
 }
 
+namespace {
+
+// Velocity feed-forward only (kv = 0): the velocity loop's own response.
+DriveParameters velocity_loop(double lag_s) {
+  DriveParameters p{0, lag_s, 0.001};
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("RIG-3 drive model: second-order velocity loop step equals the analytic response", "[drive]") {
+  DriveParameters p = velocity_loop(0.002);  // omega = 500 rad/s
+  p.velocity_loop_order = 2;
+  p.velocity_damping = 0.5;
+  DriveModel drive(p);
+  const double w = 500, zeta = 0.5, wd = w * std::sqrt(1 - zeta * zeta), v0 = 100;
+  double overshoot = 0;
+  for (int k = 1; k <= 100; ++k) {
+    const double t = k * 0.001;
+    const double v = v0 * (1 - std::exp(-zeta * w * t) * (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) *
+                                                                               std::sin(wd * t)));
+    const DriveOutput out = drive.step(0, v0);
+    INFO("t = " << t);
+    CHECK(out.velocity == Approx(v).margin(1e-9));
+    overshoot = std::max(overshoot, out.velocity - v0);
+  }
+  CHECK(overshoot == Approx(v0 * std::exp(-zeta * M_PI / std::sqrt(1 - zeta * zeta))).epsilon(0.05));  // 16 %
+}
+
+TEST_CASE("RIG-3 drive model: the torque limit caps the acceleration (saturation), then the lag goes on",
+          "[drive]") {
+  DriveParameters p = velocity_loop(0.01);
+  p.acceleration_limit = 2000;
+  DriveModel drive(p);
+  // Demand (100 - v) / T exceeds 2000 until v = 80, at t = 40 ms.
+  for (int k = 1; k <= 200; ++k) {
+    const double t = k * 0.001;
+    const DriveOutput out = drive.step(0, 100);
+    INFO("t = " << t);
+    if (k <= 40) {
+      CHECK(out.velocity == Approx(2000 * t).margin(1e-9));
+      CHECK(out.acceleration == Approx(2000).margin(1e-6));
+    } else {
+      CHECK(out.velocity == Approx(100 - 20 * std::exp(-(t - 0.04) / 0.01)).margin(1e-6));
+    }
+  }
+}
+
+TEST_CASE("RIG-3 drive model: viscous and Coulomb friction against the analytic responses; stiction",
+          "[drive]") {
+  SECTION("viscous: v' = (v_ff - v) / T - b v") {
+    DriveParameters p = velocity_loop(0.01);
+    p.viscous_friction = 50;
+    DriveModel drive(p);
+    const double v_end = 100 / (1 + 50 * 0.01), rate = 1 / 0.01 + 50;
+    for (int k = 1; k <= 100; ++k)
+      CHECK(drive.step(0, 100).velocity == Approx(v_end * (1 - std::exp(-rate * k * 0.001))).margin(1e-9));
+  }
+  SECTION("Coulomb: v' = (v_ff - v) / T - c while moving") {
+    DriveParameters p = velocity_loop(0.01);
+    p.coulomb_friction = 1000;
+    DriveModel drive(p);
+    for (int k = 1; k <= 100; ++k)
+      CHECK(drive.step(0, 100).velocity == Approx(90 * (1 - std::exp(-k * 0.001 / 0.01))).margin(1e-9));
+  }
+  SECTION("stiction: a torque below the Coulomb friction does not move the axis") {
+    DriveParameters p = velocity_loop(0.01);
+    p.coulomb_friction = 1000;
+    DriveModel drive(p);
+    for (int k = 1; k <= 100; ++k) {
+      const DriveOutput out = drive.step(0, 5);  // torque 500 < 1000
+      CHECK(out.position == 0);
+      CHECK(out.velocity == 0);
+    }
+  }
+  SECTION("a position loop with Coulomb friction stops within its dead band c T / kv") {
+    DriveParameters p{40, 0.002, 0.001};
+    p.coulomb_friction = 100;
+    DriveModel drive(p);
+    DriveOutput out;
+    for (int k = 1; k <= 2000; ++k) out = drive.step(1, 0);
+    CHECK(std::abs(out.following_error) <= 100 * 0.002 / 40 + 1e-12);
+    CHECK(out.velocity == 0);
+  }
+}
+
 TEST_CASE("RIG-3 drive model: the discrete system is stable; bad parameters are refused", "[drive]") {
   for (double dt : {0.0001, 0.001, 0.01, 0.1}) {
-    DriveModel drive({40, 0.002, dt});
-    const auto eig = drive.transition().eigenvalues();
-    for (int i = 0; i < 2; ++i) CHECK(std::abs(eig(i)) < 1);
+    for (int order : {1, 2}) {
+      DriveParameters p{40, 0.002, dt};
+      p.velocity_loop_order = order;
+      p.velocity_damping = 0.7;
+      p.viscous_friction = 5;
+      DriveModel drive(p);
+      const Eigen::VectorXcd eig = drive.cycle_transition().eigenvalues();
+      REQUIRE(eig.size() == order + 1);
+      for (int i = 0; i < eig.size(); ++i) CHECK(std::abs(eig(i)) < 1);
+    }
   }
-  CHECK_THROWS_AS(DriveModel({0, 0.002, 0.001}), std::invalid_argument);
+  CHECK_THROWS_AS(DriveModel({-1, 0.002, 0.001}), std::invalid_argument);
   CHECK_THROWS_AS(DriveModel({40, -1, 0.001}), std::invalid_argument);
+  CHECK_THROWS_AS(DriveModel({40, 0.002, 0}), std::invalid_argument);
+  DriveParameters second{40, 0.02, 0.001};
+  second.velocity_loop_order = 2;
+  second.velocity_damping = 0.3;  // 2 zeta / T = 30 < kv: the position loop oscillates up
+  CHECK_THROWS_WITH(DriveModel(second), Catch::Contains("kv < 2 velocity_damping / velocity_lag_s"));
+  second.velocity_loop_order = 3;
+  CHECK_THROWS_WITH(DriveModel(second), Catch::Contains("velocity_loop_order"));
+  DriveParameters friction{40, 0.002, 0.001};
+  friction.coulomb_friction = -1;
+  CHECK_THROWS_WITH(DriveModel(friction), Catch::Contains("Coulomb"));
 }
 
 namespace {
@@ -178,4 +281,24 @@ TEST_CASE("RIG-3 software limit switches: setpoint on P-AXIS-00177/00178, actual
   CHECK(events[1].parameter == "P-AXIS-00177");
   CHECK(events[1].limit == -10);
   CHECK_THAT(events[1].message, Catch::Contains("setpoint"));
+}
+
+TEST_CASE("RIG-3 drive model: built from the machine file's axis", "[drive]") {
+  AxisConfig axis = test::xyz_machine().axes[2];  // Z: kv 35, velocity_lag_s 0.0025
+  axis.velocity_loop_order = 2;
+  axis.velocity_damping = 0.8;
+  axis.velocity_feedforward = 0.9;
+  axis.drive_acceleration_limit = 5000;
+  axis.friction_coulomb = 20;
+  axis.friction_viscous = 1;
+  const DriveParameters p = drive_parameters(axis, 0.001);
+  CHECK(p.kv == 35);
+  CHECK(p.velocity_lag_s == 0.0025);
+  CHECK(p.velocity_loop_order == 2);
+  CHECK(p.velocity_damping == 0.8);
+  CHECK(p.feedforward == 0.9);
+  CHECK(p.acceleration_limit == 5000);
+  CHECK(p.coulomb_friction == 20);
+  CHECK(p.viscous_friction == 1);
+  CHECK(std::isinf(drive_parameters(test::xyz_machine().axes[0], 0.001).acceleration_limit));  // none configured
 }

@@ -127,7 +127,7 @@ TEST_CASE("RIG-3 machine: P-AXIS-00441/00442 below 1000 (limit under a_max) are 
   CHECK_THROWS_WITH(parse_machine_config(YAML::Load("axes: []")), Catch::Contains("non-empty"));
 }
 
-TEST_CASE("RIG-3 machine: monitoring parameters P-AXIS-00439/00440, 00168/00169/00172, 00177/00178/00179",
+TEST_CASE("RIG-3 machine: drive model keys and monitoring parameters P-AXIS-00439/00440, 00168/00169/00172, 00177/00178/00179",
           "[scenario]") {
   const std::string axis = "{name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002";
   auto machine = [&](const std::string& extra) {
@@ -147,6 +147,17 @@ TEST_CASE("RIG-3 machine: monitoring parameters P-AXIS-00439/00440, 00168/00169/
   CHECK(machine(", slep_max: 0.5, following_error_monitoring: 0").following_error_monitoring == 0);
   CHECK_THROWS_WITH(machine(", slep_max: 0.5, following_error_monitoring: 1"), Catch::Contains("P-AXIS-00172"));
   CHECK_THROWS_WITH(machine(", following_error_monitoring: 4"), Catch::Contains("P-AXIS-00168"));
+  const AxisConfig drive = machine(", velocity_loop_order: 2, velocity_damping: 0.5, velocity_feedforward: 0.8, "
+                                   "drive_acceleration_limit: 3000, friction_coulomb: 10, friction_viscous: 2");
+  CHECK(drive.velocity_loop_order == 2);
+  CHECK(drive.velocity_damping == 0.5);
+  CHECK(drive.velocity_feedforward == 0.8);
+  CHECK(drive.drive_acceleration_limit == 3000);
+  CHECK(drive.friction_coulomb == 10);
+  CHECK(drive.friction_viscous == 2);
+  CHECK_THROWS_WITH(machine(", velocity_loop_order: 3"), Catch::Contains("velocity_loop_order"));
+  CHECK_THROWS_WITH(machine(", velocity_feedforward: 1.5"), Catch::Contains("velocity_feedforward"));
+  CHECK_THROWS_WITH(machine(", friction_coulomb: -1"), Catch::Contains("friction_coulomb"));
   const AxisConfig swe = machine(", swe_neg: -5, swe_pos: 500");
   CHECK(swe.software_limits);
   CHECK(swe.swe_toleranz == 0.1);
