@@ -22,14 +22,29 @@ int count_errors(const logger::RunLog& log) {
 
 std::string format_check(const logger::RunLog& log, const logger::CheckReport& report) {
   std::ostringstream out;
-  out << "axis | cmd |v| / v_max [mm/s] | cmd |a| / a_max [mm/s^2] | cmd |j| / j_max [mm/s^3]"
-         " | act |v| / P-AXIS-00440 limit | act |a| / P-AXIS-00442 limit | max |FE| / P-AXIS-00168 [mm]\n";
+  // Per axis: the largest value of each quantity, its limit and the margin
+  // left (negative: the limit was exceeded).
   for (const auto& a : report.axes) {
-    out << a.axis << "    | " << fmt("%9.3f / %-9.3f", a.cmd_v, a.v_max) << "| "
-        << fmt("%10.2f / %-10.2f", a.cmd_a, a.a_max) << "| " << fmt("%11.1f / %-11.1f", a.cmd_j, a.j_max)
-        << "| " << fmt("%9.3f / %-9.3f", a.act_v, a.v_err_limit) << "| " << fmt("%10.2f / %-10.2f", a.act_a, a.a_err_limit) << "| "
-        << fmt("%8.5f / %-8.5f", a.following_error, a.slep_max)
-        << (a.slep_max > 0 ? "" : "(none)") << '\n';
+    char head[160];
+    std::snprintf(head, sizeof head, "axis %-37s %12s %12s %10s\n", a.axis.c_str(), "max", "limit", "margin");
+    out << head;
+    auto row = [&](const char* quantity, double value, double limit) {
+      char buf[160];
+      // Round-off above a limit (within the check's tolerance) shows as 0.0 %.
+      double margin = limit > 0 ? 100 * (limit - value) / limit : 0;
+      if (margin < 0 && margin > -0.05) margin = 0;
+      if (limit > 0)
+        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12.4f %8.1f %%\n", quantity, value, limit, margin);
+      else
+        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12s %10s\n", quantity, value, "-", "-");
+      out << buf;
+    };
+    row("commanded |v| [mm/s] / v_max", a.cmd_v, a.v_max);
+    row("commanded |a| [mm/s^2] / a_max", a.cmd_a, a.a_max);
+    row("commanded |j| [mm/s^3] / j_max", a.cmd_j, a.j_max);
+    row("actual |v| [mm/s] / P-AXIS-00440", a.act_v, a.v_err_limit);
+    row("actual |a| [mm/s^2] / P-AXIS-00442", a.act_a, a.a_err_limit);
+    row("|following error| [mm] / P-AXIS-00168", a.following_error, a.slep_max);
   }
   int64_t violating_cycles = 0;
   for (const auto& v : report.violations) violating_cycles += v.cycles;
