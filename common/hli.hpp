@@ -51,6 +51,8 @@ struct HliControl {
   ControlUnitBool program_start;
   ControlUnitBool feedhold;
   ControlUnitValue override;
+  ControlUnitBool delete_distance_to_go;
+  ControlUnitValue delete_distance_to_go_activation;
 };
 
 struct HliState {
@@ -67,6 +69,9 @@ struct HliState {
   ControlUnitState program_start;
   ControlUnitState feedhold;
   ControlUnitValueState override;
+  ControlUnitState delete_distance_to_go;
+  ControlUnitValueState delete_distance_to_go_activation;
+  bool delete_distance_to_go_active_r = false;  // a short cut runs (DDTG-4)
 };
 
 // HLI length unit: 0.1 um.

@@ -26,9 +26,6 @@ ChannelState channel_state_of(const YAML::Node& node, const std::string& where) 
   return state;
 }
 
-const std::vector<std::string> condition_keys = {
-    "cycle", "time_s", "block_nr_r", "block_count_r", "dist_prog_start_mm", "channel_state"};
-
 Condition parse_condition(const YAML::Node& node, const std::string& where) {
   Condition c;
   if (node.IsScalar() && node.as<std::string>() == "program_end") {
@@ -44,6 +41,7 @@ Condition parse_condition(const YAML::Node& node, const std::string& where) {
     else if (key == "block_count_r") c.block_count_r = item.second.as<int64_t>();
     else if (key == "dist_prog_start_mm") c.dist_prog_start_mm = item.second.as<double>();
     else if (key == "channel_state") c.channel_state = channel_state_of(item.second, where);
+    else if (key == "delete_distance_to_go_active_r") c.delete_distance_to_go_active_r = item.second.as<bool>();
     else throw ConfigError(where + ": unknown trigger '" + key + "'");
   }
   return c;
@@ -82,6 +80,7 @@ Expectation parse_expectation(const YAML::Node& node, const std::string& where) 
     else if (key == "block_count_r") e.block_count_r = item.second.as<int64_t>();
     else if (key == "dist_prog_start_mm") e.dist_prog_start_mm = item.second.as<double>();
     else if (key == "tolerance_mm") e.tolerance_mm = item.second.as<double>();
+    else if (key == "delete_distance_to_go_active_r") e.delete_distance_to_go_active_r = item.second.as<bool>();
     else if (key == "axis_position_mm") {
       for (const auto& axis : item.second)
         e.axis_position_mm[axis.first.as<std::string>()] = axis.second.as<double>();
@@ -134,6 +133,8 @@ bool Condition::holds(const HliState& s, double cycle_time_s) const {
   if (block_count_r && s.block_count_r != *block_count_r) return false;
   if (dist_prog_start_mm && s.dist_prog_start / hli_units_per_mm < *dist_prog_start_mm) return false;
   if (channel_state && s.channel_state != *channel_state) return false;
+  if (delete_distance_to_go_active_r && s.delete_distance_to_go_active_r != *delete_distance_to_go_active_r)
+    return false;
   return true;
 }
 
@@ -146,6 +147,8 @@ std::string Condition::describe() const {
   if (block_count_r) out << sep << "block_count_r=" << *block_count_r, sep = " ";
   if (dist_prog_start_mm) out << sep << "dist_prog_start_mm>=" << *dist_prog_start_mm, sep = " ";
   if (channel_state) out << sep << "channel_state=" << to_string(*channel_state), sep = " ";
+  if (delete_distance_to_go_active_r)
+    out << sep << "delete_distance_to_go_active_r=" << (*delete_distance_to_go_active_r ? "true" : "false"), sep = " ";
   return out.str();
 }
 

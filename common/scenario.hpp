@@ -24,6 +24,7 @@ struct Condition {
   std::optional<int64_t> block_count_r;       // == value
   std::optional<double> dist_prog_start_mm;   // covered distance >= value
   std::optional<ChannelState> channel_state;  // == value
+  std::optional<bool> delete_distance_to_go_active_r;  // == value
 
   bool holds(const HliState& state, double cycle_time_s) const;
   std::string describe() const;
@@ -48,6 +49,7 @@ struct Expectation {
   std::optional<int64_t> block_nr_r;
   std::optional<int64_t> block_count_r;
   std::optional<double> dist_prog_start_mm;
+  std::optional<bool> delete_distance_to_go_active_r;
   std::map<std::string, double> axis_position_mm;
   double tolerance_mm = 0.001;
 };

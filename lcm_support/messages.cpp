@@ -44,6 +44,11 @@ hil::hli_state_t to_message(const HliState& s, int64_t utime) {
   m.feedhold.state_r = s.feedhold.state_r;
   m.override.request_r = s.override.request_r;
   m.override.state_r = s.override.state_r;
+  m.delete_distance_to_go.request_r = s.delete_distance_to_go.request_r;
+  m.delete_distance_to_go.state_r = s.delete_distance_to_go.state_r;
+  m.delete_distance_to_go_activation.request_r = s.delete_distance_to_go_activation.request_r;
+  m.delete_distance_to_go_activation.state_r = s.delete_distance_to_go_activation.state_r;
+  m.delete_distance_to_go_active_r = s.delete_distance_to_go_active_r;
   return m;
 }
 
@@ -65,6 +70,11 @@ HliState from_message(const hil::hli_state_t& m) {
   s.feedhold.state_r = m.feedhold.state_r;
   s.override.request_r = m.override.request_r;
   s.override.state_r = m.override.state_r;
+  s.delete_distance_to_go.request_r = m.delete_distance_to_go.request_r;
+  s.delete_distance_to_go.state_r = m.delete_distance_to_go.state_r;
+  s.delete_distance_to_go_activation.request_r = m.delete_distance_to_go_activation.request_r;
+  s.delete_distance_to_go_activation.state_r = m.delete_distance_to_go_activation.state_r;
+  s.delete_distance_to_go_active_r = m.delete_distance_to_go_active_r;
   return s;
 }
 
@@ -78,6 +88,10 @@ hil::hli_control_t to_message(const HliControl& c, int64_t utime) {
   m.feedhold.enable_w = c.feedhold.enable_w;
   m.override.command_w = c.override.command_w;
   m.override.enable_w = c.override.enable_w;
+  m.delete_distance_to_go.command_w = c.delete_distance_to_go.command_w;
+  m.delete_distance_to_go.enable_w = c.delete_distance_to_go.enable_w;
+  m.delete_distance_to_go_activation.command_w = c.delete_distance_to_go_activation.command_w;
+  m.delete_distance_to_go_activation.enable_w = c.delete_distance_to_go_activation.enable_w;
   return m;
 }
 
@@ -90,6 +104,10 @@ HliControl from_message(const hil::hli_control_t& m) {
   c.feedhold.enable_w = m.feedhold.enable_w;
   c.override.command_w = m.override.command_w;
   c.override.enable_w = m.override.enable_w;
+  c.delete_distance_to_go.command_w = m.delete_distance_to_go.command_w;
+  c.delete_distance_to_go.enable_w = m.delete_distance_to_go.enable_w;
+  c.delete_distance_to_go_activation.command_w = m.delete_distance_to_go_activation.command_w;
+  c.delete_distance_to_go_activation.enable_w = m.delete_distance_to_go_activation.enable_w;
   return c;
 }
 

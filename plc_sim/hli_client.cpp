@@ -9,9 +9,11 @@ namespace {
 const std::vector<std::pair<std::string, ControlUnitBool HliControl::*>> bool_units = {
     {"program_start", &HliControl::program_start},
     {"feedhold", &HliControl::feedhold},
+    {"delete_distance_to_go", &HliControl::delete_distance_to_go},
 };
 const std::vector<std::pair<std::string, ControlUnitValue HliControl::*>> value_units = {
     {"override", &HliControl::override},
+    {"delete_distance_to_go_activation", &HliControl::delete_distance_to_go_activation},
 };
 
 bool write_bool(bool& field, int32_t value) {
@@ -46,7 +48,7 @@ std::vector<std::string> control_field_names() {
     names.push_back(unit.first + ".enable_w");
   }
   for (const auto& unit : value_units) {
-    names.push_back(unit.first + ".command_w (0.1 %)");
+    names.push_back(unit.first + (unit.first == "override" ? ".command_w (0.1 %)" : ".command_w (mask)"));
     names.push_back(unit.first + ".enable_w");
   }
   return names;

@@ -66,6 +66,9 @@ ExpectationResult ScenarioEngine::evaluate(const Expectation& e, const HliState&
     check(std::abs(mm - *e.dist_prog_start_mm) <= e.tolerance_mm,
           "dist_prog_start " + std::to_string(mm) + " mm != " + std::to_string(*e.dist_prog_start_mm));
   }
+  if (e.delete_distance_to_go_active_r)
+    check(s.delete_distance_to_go_active_r == *e.delete_distance_to_go_active_r,
+          std::string("delete_distance_to_go_active_r ") + (s.delete_distance_to_go_active_r ? "true" : "false"));
   for (const auto& [axis, expected] : e.axis_position_mm) {
     for (size_t i = 0; i < s.axis_name.size(); ++i) {
       if (s.axis_name[i] != axis) continue;

@@ -38,7 +38,12 @@ void Channel::drive_error(const std::string& axis, const std::string& what) {
   raise(e);
   error_stop_ = hli_.channel_state == ChannelState::active;
   hli_.channel_state = ChannelState::error;
-  look_ahead_.set_velocity_factor(0.0);
+  update_velocity_factor();
+}
+
+void Channel::update_velocity_factor() {
+  const bool stop = hli_.feedhold.state_r || ddtg_requested_ || hli_.channel_state == ChannelState::error;
+  look_ahead_.set_velocity_factor(stop ? 0.0 : hli_.override.state_r / static_cast<double>(override_full));
   replan_ = true;
 }
 
@@ -51,12 +56,16 @@ void Channel::step(int64_t cycle, const HliControl& control) {
   cycle_ = cycle;
   hli_.cycle = cycle;
   apply_velocity_control(control);
+  apply_delete_distance_to_go(control);
   apply_program_start(control.program_start);
   if (hli_.channel_state == ChannelState::active || error_stop_) {
     const double t = static_cast<double>(cycle - start_cycle_) * machine_.cycle_time_s();
     interpolate(t);
-    if (error_stop_ && (look_ahead_.empty() || t - plan_start_ >= plan_.duration())) error_stop_ = false;
+    const bool standing = look_ahead_.empty() || t - plan_start_ >= plan_.duration();
+    if (error_stop_ && standing) error_stop_ = false;
+    if (ddtg_requested_ && standing && hli_.channel_state == ChannelState::active) start_short_cut(t);
   }
+  hli_.delete_distance_to_go.state_r = ddtg_requested_ || hli_.delete_distance_to_go_active_r;
   for (size_t i = 0; i < setpoints_.size(); ++i)
     hli_.axis_position_r[i] = std::llround(setpoints_[i].position * hli_units_per_mm);
   hli_.program_start.state_r = hli_.channel_state == ChannelState::active;
@@ -108,9 +117,78 @@ void Channel::apply_velocity_control(const HliControl& control) {
   if (hold == hli_.feedhold.state_r && value == hli_.override.state_r) return;
   hli_.feedhold.state_r = hold;
   hli_.override.state_r = value;
-  if (hli_.channel_state == ChannelState::error) return;  // stopping for good
-  look_ahead_.set_velocity_factor(hold ? 0.0 : value / static_cast<double>(override_full));
-  replan_ = true;
+  update_velocity_factor();
+}
+
+// DDTG-1, DDTG-3: a rising edge of command_w while enable_w stops the path
+// for a short cut; command_w cleared before the short cut starts cancels
+// it, and the original contour goes on.
+void Channel::apply_delete_distance_to_go(const HliControl& control) {
+  const ControlUnitBool& unit = control.delete_distance_to_go;
+  const bool commanded = unit.command_w && unit.enable_w;
+  hli_.delete_distance_to_go.request_r = commanded;
+  const bool rising = unit.command_w && !previous_ddtg_command_;
+  previous_ddtg_command_ = unit.command_w;
+  if (ddtg_requested_ && !commanded) {
+    ddtg_requested_ = false;
+    update_velocity_factor();
+  } else if (rising && commanded && hli_.channel_state == ChannelState::active && !ddtg_requested_) {
+    ddtg_requested_ = true;
+    update_velocity_factor();
+  }
+  // The end marker mask (DDTG-5) is taken over; the markers are not built yet.
+  const ControlUnitValue& activation = control.delete_distance_to_go_activation;
+  hli_.delete_distance_to_go_activation.request_r = activation.enable_w;
+  hli_.delete_distance_to_go_activation.state_r = activation.enable_w ? activation.command_w : 0;
+}
+
+void Channel::start_short_cut(double t) {
+  ddtg_requested_ = false;
+  const LookAheadBlock& front = look_ahead_.front();
+  const double length = front.segment.length();
+  const double s = std::clamp(path_state_at(t).p, 0.0, length);
+  const bool on_short_cut = hli_.delete_distance_to_go_active_r && front.block_index == short_cut_target_;
+  const bool rapid = on_short_cut ? short_cut_rapid_ : blocks_[front.block_index].motion.type == MotionType::rapid;
+  const double interrupted_feed = blocks_[front.block_index].motion.feed;
+  std::vector<double> stop(setpoints_.size());
+  for (size_t i = 0; i < stop.size(); ++i) stop[i] = setpoints_[i].position;
+  if (dps_counting_ && length > 0) dps_before_front_ += front.segment.covered_distance() * s / length;
+  // The rest of the front block is dropped; what lies between it and the
+  // target (non-motion blocks) runs at the stop position, before the short cut.
+  next_to_run_ = front.block_index + 1;
+  size_t target = next_to_run_;
+  while (target < blocks_.size() && !blocks_[target].has_motion) ++target;
+  look_ahead_.clear();
+  hli_.delete_distance_to_go_active_r = false;
+  update_velocity_factor();
+  if (target >= blocks_.size()) {  // DDTG-6: no motion block left to short-cut to
+    Event none;
+    none.severity = Severity::warning;
+    none.id = 50810;
+    none.nc_line = hli_.block_count_r;
+    none.block_nr = hli_.block_nr_r;
+    none.message = "delete distance to go: no further motion block; motion ends at the stop position";
+    raise(none);
+    next_to_look_ahead_ = blocks_.size();
+    return;
+  }
+  Motion cut;
+  cut.type = rapid ? MotionType::rapid : MotionType::linear;  // DDTG-2: linear, G00 if the interrupted block was
+  cut.start = stop;
+  cut.end = blocks_[target].motion.end;
+  cut.feed = blocks_[target].motion.feed > 0 ? blocks_[target].motion.feed : interrupted_feed;
+  PathSegment segment(cut, machine_);
+  next_to_look_ahead_ = target + 1;
+  if (segment.length() > 0) {
+    look_ahead_.push(target, std::move(segment), blocks_[target].slope);
+    short_cut_target_ = target;
+    short_cut_rapid_ = rapid;
+    hli_.delete_distance_to_go_active_r = true;
+  }
+  refill_look_ahead();
+  if (look_ahead_.empty()) return;
+  begin_front({}, t);
+  replan_ = false;
 }
 
 void Channel::start_program() {
@@ -159,6 +237,8 @@ void Channel::plan(const MotionState& state, double t0) {
 void Channel::finish_front() {
   const LookAheadBlock& front = look_ahead_.front();
   if (dps_counting_) dps_before_front_ += front.segment.covered_distance();
+  if (hli_.delete_distance_to_go_active_r && front.block_index == short_cut_target_)
+    hli_.delete_distance_to_go_active_r = false;  // DDTG-4: the short cut is done
   next_to_run_ = front.block_index + 1;
   look_ahead_.pop_front();
   refill_look_ahead();

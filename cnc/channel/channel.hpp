@@ -46,6 +46,13 @@ class Channel {
  private:
   void apply_program_start(const ControlUnitBool& start);
   void apply_velocity_control(const HliControl& control);
+  void apply_delete_distance_to_go(const HliControl& control);
+  // Feed hold, a pending delete distance to go and an error stop the path;
+  // otherwise the override sets its velocity.
+  void update_velocity_factor();
+  // DDTG-1: the path stands still; replace the rest of the front block and
+  // the next motion block by a linear short cut to the latter's end point.
+  void start_short_cut(double t);
   void start_program();
   void refill_look_ahead();
   // Makes the look-ahead's front block the one in the interpolator, after
@@ -73,6 +80,10 @@ class Channel {
   double plan_start_ = 0;          // s after program start
   bool replan_ = false;            // override or feed hold changed
   bool error_stop_ = false;        // stopping on a drive error: still moving
+  bool ddtg_requested_ = false;    // delete distance to go: stopping for the short cut (DDTG-1)
+  bool previous_ddtg_command_ = false;
+  size_t short_cut_target_ = 0;    // while a short cut runs: the block whose end point it goes to
+  bool short_cut_rapid_ = false;   // the short cut runs in G00 (DDTG-2)
   // The channel starts once: ON and CLEAR, the defaults at program start (DPS-2).
   bool dps_counting_ = true;       // #DISTANCE PROG START ON
   double dps_before_front_ = 0;    // mm counted before the front block

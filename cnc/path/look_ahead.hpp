@@ -52,6 +52,7 @@ class LookAhead {
 
   void push(size_t block_index, PathSegment segment, SlopeType slope);
   void pop_front() { blocks_.pop_front(); }
+  void clear() { blocks_.clear(); }
 
   // Override times feed hold (0): scales every programmed velocity.
   void set_velocity_factor(double factor);

@@ -41,6 +41,9 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   s.feedhold.state_r = true;
   s.override.request_r = true;
   s.override.state_r = 1200;
+  s.delete_distance_to_go = {true, true};
+  s.delete_distance_to_go_activation = {true, 0x14};
+  s.delete_distance_to_go_active_r = true;
   const HliState t = lcm_support::from_message(through_the_wire(lcm_support::to_message(s, 42000)));
   CHECK(t.cycle == 42);
   CHECK(t.channel_state == ChannelState::error);
@@ -57,6 +60,9 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   CHECK(t.feedhold.state_r);
   CHECK(t.override.request_r);
   CHECK(t.override.state_r == 1200);
+  CHECK(t.delete_distance_to_go.state_r);
+  CHECK(t.delete_distance_to_go_activation.state_r == 0x14);
+  CHECK(t.delete_distance_to_go_active_r);
 
   HliControl c;
   c.cycle = 7;
@@ -64,12 +70,16 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   c.program_start.enable_w = true;
   c.feedhold = {true, true};
   c.override = {734, true};
+  c.delete_distance_to_go = {true, true};
+  c.delete_distance_to_go_activation = {0x105, true};
   const HliControl d = lcm_support::from_message(through_the_wire(lcm_support::to_message(c, 7000)));
   CHECK(d.cycle == 7);
   CHECK(d.program_start.command_w);
   CHECK(d.program_start.enable_w);
   CHECK(d.feedhold.command_w);
   CHECK(d.override.command_w == 734);
+  CHECK(d.delete_distance_to_go.command_w);
+  CHECK(d.delete_distance_to_go_activation.command_w == 0x105);
   CHECK(d.override.enable_w);
 }
 

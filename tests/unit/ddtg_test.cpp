@@ -1,0 +1,171 @@
+// DDTG-1 .. DDTG-4, DDTG-6: delete distance to go on the channel, cycle by
+// cycle as the rig runs it; every run goes through the offline checker.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "channel_runner.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+using hil::test::run_program;
+
+namespace {
+
+struct Sample {
+  int64_t cycle;
+  double x, y, v;
+  bool active;
+  int64_t block_nr;
+};
+
+// Runs `program`; the PLC raises delete_distance_to_go at each cycle in
+// `edges` and holds it `hold` cycles (long enough for the stop, unless a
+// test clears it early).
+std::vector<Sample> run_with_ddtg(const std::string& program, std::vector<int64_t> edges, int64_t hold,
+                                  std::vector<Event>* events = nullptr) {
+  const MachineConfig m = test::xyz_machine();
+  Channel channel(m, program);
+  logger::LimitChecker checker(m);
+  std::vector<Sample> samples;
+  run_program(channel, &checker, [&](int64_t k, const HliState& s, HliControl& c) {
+    samples.push_back({k, channel.setpoints()[0].position, channel.setpoints()[1].position, s.path_velocity,
+                       s.delete_distance_to_go_active_r, s.block_nr_r});
+    bool command = false;
+    for (int64_t edge : edges) command = command || (k >= edge && k < edge + hold);
+    c.delete_distance_to_go = {command, true};
+  });
+  for (const auto& v : checker.finish().violations)
+    FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+  const HliState& end = channel.hli();
+  samples.push_back({end.cycle, channel.setpoints()[0].position, channel.setpoints()[1].position, end.path_velocity,
+                     end.delete_distance_to_go_active_r, end.block_nr_r});
+  if (events) *events = channel.take_events();
+  return samples;
+}
+
+// Distance of (x, y) from the line through a and b.
+double off_line(double x, double y, double ax, double ay, double bx, double by) {
+  return std::abs((bx - ax) * (y - ay) - (by - ay) * (x - ax)) / std::hypot(bx - ax, by - ay);
+}
+
+const Sample* first_active(const std::vector<Sample>& samples) {
+  for (const Sample& s : samples)
+    if (s.active) return &s;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("DDTG-1 DDTG-4 delete distance to go: stop, then a linear short cut to the end of the next block",
+          "[ddtg]") {
+  // TF5200_delete_distance_to_go.txt, 2.1 (Fig. 2).
+  const auto samples = run_with_ddtg("N05 G0 X0 Y0\nN10 G1 X80 F500\nN20 G1 Y60\nN30 G1 X60 Y80\nN40 M30\n",
+                                     {3000}, 400);
+  const Sample* cut = first_active(samples);
+  REQUIRE(cut != nullptr);
+  const double stop_x = cut->x;
+  CHECK(stop_x > 20);
+  CHECK(stop_x < 30);  // the rest of N10 (to X80) is dropped
+  CHECK(cut->y == 0);
+  double v_max_on_cut = 0;
+  bool was_active = false, ended = false;
+  for (const Sample& s : samples) {
+    if (s.cycle < 3000) CHECK_FALSE(s.active);
+    if (s.active) {
+      was_active = true;
+      CHECK_FALSE(ended);  // one short cut, then never again
+      CHECK(s.block_nr == 20);  // DDTG-4: block_nr_r follows the interpolator
+      CHECK(off_line(s.x, s.y, stop_x, 0, 80, 60) < 1e-9);
+      v_max_on_cut = std::max(v_max_on_cut, s.v);
+    } else if (was_active) {
+      ended = true;
+    }
+  }
+  CHECK(v_max_on_cut == Approx(500.0 / 60).epsilon(1e-9));  // DDTG-2: G01 at the next block's feed
+  // After the short cut: N30 from (80, 60) to (60, 80).
+  CHECK(samples.back().x == Approx(60).margin(1e-9));
+  CHECK(samples.back().y == Approx(80).margin(1e-9));
+  CHECK_FALSE(samples.back().active);
+}
+
+TEST_CASE("DDTG-2 the short cut runs in G00 after a G00 block, and linear out of an arc", "[ddtg]") {
+  SECTION("G00") {
+    const auto samples = run_with_ddtg("N10 G0 X200\nN20 G1 Y60 F500\nN30 X0\nM30\n", {150}, 300);
+    const Sample* cut = first_active(samples);
+    REQUIRE(cut != nullptr);
+    double v = 0;
+    for (const Sample& s : samples)
+      if (s.active) {
+        v = std::max(v, s.v);
+        CHECK(off_line(s.x, s.y, cut->x, 0, 200, 60) < 1e-9);
+      }
+    CHECK(v > 100);  // far above F500 (8.3 mm/s): rapid
+  }
+  SECTION("interrupted inside G03") {
+    // A line, a tangent quarter circle (centre 50, 20), a line.
+    const auto samples =
+        run_with_ddtg("N10 G01 X50 F3000\nN20 G03 X70 Y20 I0 J20\nN30 G01 Y60\nN40 X0\nM30\n", {1250}, 300);
+    const Sample* cut = first_active(samples);
+    REQUIRE(cut != nullptr);
+    CHECK(cut->x > 50);  // stopped on the arc
+    CHECK(cut->x < 70);
+    for (const Sample& s : samples)
+      if (s.active) {
+        CHECK(off_line(s.x, s.y, cut->x, cut->y, 70, 60) < 1e-9);  // a line, not the arc
+        CHECK(s.block_nr == 30);
+      }
+    CHECK(samples.back().x == Approx(0).margin(1e-9));
+    CHECK(samples.back().y == Approx(60).margin(1e-9));
+  }
+}
+
+TEST_CASE("DDTG-3 cleared before the short cut starts, the original contour goes on; a new edge on the short "
+          "cut goes to the end of the block after it",
+          "[ddtg]") {
+  const char* program = "N10 G1 X80 F3000\nN20 Y60\nN30 X60 Y80\nN40 X0\nM30\n";
+  SECTION("cleared while stopping") {
+    const auto samples = run_with_ddtg(program, {500}, 20);  // stopping from 50 mm/s takes ~100 cycles
+    CHECK(first_active(samples) == nullptr);
+    // N10 ran to its end: the path stops at the corner (between two cycles).
+    double closest = 1e9;
+    for (const Sample& s : samples) closest = std::min(closest, std::hypot(s.x - 80, s.y));
+    CHECK(closest < 1e-5);
+    CHECK(samples.back().x == Approx(0).margin(1e-9));
+    CHECK(samples.back().y == Approx(80).margin(1e-9));
+  }
+  SECTION("a second edge on the short cut") {
+    const auto samples = run_with_ddtg(program, {500, 1300}, 150);
+    const Sample* cut = first_active(samples);
+    REQUIRE(cut != nullptr);
+    bool second = false;
+    double second_x = 0, second_y = 0;
+    for (const Sample& s : samples) {
+      if (!s.active) continue;
+      if (s.block_nr == 30 && !second) {  // DDTG-4: still active on the shortened short cut
+        second = true;
+        second_x = s.x;
+        second_y = s.y;
+      }
+      if (second) CHECK(off_line(s.x, s.y, second_x, second_y, 60, 80) < 1e-9);
+    }
+    CHECK(second);
+    CHECK(second_x < 80);  // it left the first short cut before (80, 60)
+    CHECK(samples.back().x == Approx(0).margin(1e-9));
+    CHECK(samples.back().y == Approx(80).margin(1e-9));
+  }
+}
+
+TEST_CASE("DDTG-6 delete distance to go in the last motion block: ends at the stop position, warning 50810",
+          "[ddtg]") {
+  std::vector<Event> events;
+  const auto samples = run_with_ddtg("N10 G1 X80 F3000\nN20 M30\n", {500}, 200, &events);
+  CHECK(first_active(samples) == nullptr);
+  CHECK(samples.back().x > 20);
+  CHECK(samples.back().x < 40);
+  CHECK(samples.back().v == 0);
+  bool warned = false;
+  for (const Event& e : events) warned = warned || (e.id == 50810 && e.severity == Severity::warning);
+  CHECK(warned);
+}
