@@ -1,5 +1,6 @@
 #include "plot_export.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -40,6 +41,20 @@ void write_axis_data(const AxisTrace& t, double dt, const std::string& path) {
   }
 }
 
+// The contour in the XY plane: commanded and actual, by cycle.
+void write_xy_data(const AxisTrace& x, const AxisTrace& y, const std::string& path) {
+  std::ofstream out(path);
+  out.precision(10);
+  out << "# cmd_x\tcmd_y\tx\ty\n";
+  const size_t n = std::min(x.cmd_cycle.size(), y.cmd_cycle.size());
+  const size_t m = std::min(x.act_cycle.size(), y.act_cycle.size());
+  for (size_t i = 0; i < n; ++i) {
+    out << x.cmd_position[i] << '\t' << y.cmd_position[i];
+    if (i < m) out << '\t' << x.act_position[i] << '\t' << y.act_position[i] << '\n';
+    else out << "\t?\t?\n";
+  }
+}
+
 void write_hli_data(const HliTrace& h, double dt, const std::string& path) {
   std::ofstream out(path);
   out.precision(10);
@@ -68,7 +83,7 @@ PlotFiles write_plot_files(const RunLog& log, const CheckReport& report, const s
   files.script = (fs::path(dir) / "plots.gp").string();
   std::ofstream gp(files.script);
   gp << "# Draws the run's plots: gnuplot plots.gp (in this folder)\n"
-        "set terminal pngcairo size 1400,1500 font \",10\"\n"
+        "set terminal pngcairo noenhanced size 1400,1500 font \",10\"\n"
         "set datafile separator \"\\t\"\nset datafile missing \"?\"\n"
         "set termoption noenhanced\nset grid\nset key outside right top\nset xlabel \"t [s]\"\n"
         "set lmargin 14\nset rmargin 28\n";
@@ -97,6 +112,17 @@ PlotFiles write_plot_files(const RunLog& log, const CheckReport& report, const s
        << "\nset ylabel \"following error [mm]\"\n"
        << "plot " << quoted(data) << " u 1:8 w l t \"following error\""
        << limit_lines(a.slep_max, "red", "P-AXIS-00168 slep_max") << "\nunset multiplot\n";
+  }
+  const int ix = machine.axis_index("X"), iy = machine.axis_index("Y");
+  if (ix >= 0 && iy >= 0 && static_cast<size_t>(std::max(ix, iy)) < log.axes.size()) {
+    write_xy_data(log.axes[ix], log.axes[iy], (fs::path(dir) / "xy.tsv").string());
+    files.images.push_back((fs::path(dir) / "xy.png").string());
+    gp << "\nset output \"xy.png\"\nunset object\nset terminal pngcairo noenhanced size 1000,1000 font \",10\"\n"
+       << "set title " << quoted(run_name + ": contour in the XY plane") << "\nset size ratio -1\n"
+       << "set xlabel \"X [mm]\"\nset ylabel \"Y [mm]\"\n"
+       << "plot \"xy.tsv\" u 1:2 w l lw 2 t \"commanded\", '' u 3:4 w l t \"actual\"\n"
+       << "set size noratio\nunset title\nset xlabel \"t [s]\"\n"
+       << "set terminal pngcairo noenhanced size 1400,1500 font \",10\"\n";
   }
   write_hli_data(log.hli, dt, (fs::path(dir) / "hli.tsv").string());
   files.images.push_back((fs::path(dir) / "path.png").string());

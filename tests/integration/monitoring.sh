@@ -22,5 +22,5 @@ for png in axis_X.png path.png; do
   [ -s "$WORK/acceleration_overload/plots/$png" ] || fail "hil run drew no plots/$png"
 done
 expect_status 1 "$hil" check "$WORK/acceleration_overload/run.lcmlog" --plots "$WORK/check_plots"
-expect_output "plots: $WORK/check_plots/ (axis_X.png, path.png)"
+expect_output "plots: $WORK/check_plots/ (axis_X.png, path.png)"  # X only: no XY contour
 [ -s "$WORK/check_plots/axis_X.png" ] || fail "hil check --plots drew no axis_X.png"

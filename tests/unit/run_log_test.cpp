@@ -112,7 +112,8 @@ TEST_CASE("RIG-4 plots: the traces and a gnuplot script with limit lines and sha
   REQUIRE(log.axes.size() == 3);
   CHECK(log.axes[0].cmd_cycle.size() == 100);
   const logger::PlotFiles files = logger::write_plot_files(log, *report, dir);
-  REQUIRE(files.images.size() == 4);  // axis_X, axis_Y, axis_Z, path
+  REQUIRE(files.images.size() == 5);  // axis_X, axis_Y, axis_Z, xy, path
+  CHECK(std::filesystem::path(files.images[3]).filename() == "xy.png");
   CHECK(std::filesystem::path(files.images[0]).filename() == "axis_X.png");
   std::ifstream script(files.script);
   const std::string text((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
