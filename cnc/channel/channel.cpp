@@ -136,7 +136,7 @@ void Channel::apply_delete_distance_to_go(const HliControl& control) {
     ddtg_requested_ = true;
     update_velocity_factor();
   }
-  // The end marker mask (DDTG-5) is taken over; the markers are not built yet.
+  // The end marker mask (DDTG-5), in force from the next short cut on.
   const ControlUnitValue& activation = control.delete_distance_to_go_activation;
   hli_.delete_distance_to_go_activation.request_r = activation.enable_w;
   hli_.delete_distance_to_go_activation.state_r = activation.enable_w ? activation.command_w : 0;
@@ -155,9 +155,23 @@ void Channel::start_short_cut(double t) {
   if (dps_counting_ && length > 0) dps_before_front_ += front.segment.covered_distance() * s / length;
   // The rest of the front block is dropped; what lies between it and the
   // target (non-motion blocks) runs at the stop position, before the short cut.
-  next_to_run_ = front.block_index + 1;
-  size_t target = next_to_run_;
-  while (target < blocks_.size() && !blocks_[target].has_motion) ++target;
+  const size_t interrupted = front.block_index;
+  next_to_run_ = interrupted + 1;
+  // DDTG-1: to the end point of the next motion block. DDTG-5: with an
+  // activation mask, to where the first valid #DEL DIST2GO marker stands
+  // (the end of the last motion block before it).
+  const uint32_t mask = static_cast<uint32_t>(hli_.delete_distance_to_go_activation.state_r);
+  size_t target = blocks_.size();
+  if (mask == 0) {
+    target = next_to_run_;
+    while (target < blocks_.size() && !blocks_[target].has_motion) ++target;
+  } else {
+    for (size_t i = next_to_run_; i < blocks_.size() && target == blocks_.size(); ++i) {
+      if (!blocks_[i].ddtg_end_marker || (*blocks_[i].ddtg_end_marker & mask) == 0) continue;
+      target = i - 1;
+      while (target > interrupted && !blocks_[target].has_motion) --target;
+    }
+  }
   look_ahead_.clear();
   hli_.delete_distance_to_go_active_r = false;
   update_velocity_factor();
@@ -167,7 +181,9 @@ void Channel::start_short_cut(double t) {
     none.id = 50810;
     none.nc_line = hli_.block_count_r;
     none.block_nr = hli_.block_nr_r;
-    none.message = "delete distance to go: no further motion block; motion ends at the stop position";
+    none.message = mask == 0 ? "delete distance to go: no further motion block; motion ends at the stop position"
+                              : "delete distance to go: no #DEL DIST2GO end marker valid for activation " +
+                                    std::to_string(mask) + " before program end; motion ends at the stop position";
     raise(none);
     next_to_look_ahead_ = blocks_.size();
     return;

@@ -51,7 +51,8 @@ class Channel {
   // otherwise the override sets its velocity.
   void update_velocity_factor();
   // DDTG-1: the path stands still; replace the rest of the front block and
-  // the next motion block by a linear short cut to the latter's end point.
+  // the next motion block by a linear short cut to the latter's end point
+  // (DDTG-5: everything up to the first valid end marker).
   void start_short_cut(double t);
   void start_program();
   void refill_look_ahead();

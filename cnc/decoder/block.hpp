@@ -30,6 +30,9 @@ struct Block {
   Motion motion;
   SlopeType slope = SlopeType::trapez;  // #SLOPE[TYPE=..] in force for the motion
   std::optional<DistanceProgStart> distance_prog_start;
+  // #DEL DIST2GO [END=..]: a short-cut target, valid while the PLC's
+  // activation mask shares a bit with it (DDTG-5).
+  std::optional<uint32_t> ddtg_end_marker;
   bool program_end = false;  // M30
 };
 

@@ -119,7 +119,7 @@ class LineDecoder {
         throw LineError{"a '#' command must stand alone in its block (after the N number)"};
       if (!before.empty()) block.block_nr = integer_code(before[0]);
       decode_command(upper_words(code.substr(hash)), block);
-      if (block.distance_prog_start) out.push_back(block);
+      if (block.distance_prog_start || block.ddtg_end_marker) out.push_back(block);
       return true;
     }
     const std::vector<Word> words = split_words(code);
@@ -218,6 +218,7 @@ class LineDecoder {
     else if (command.rfind("#DISTANCE PROG START", 0) == 0)
       throw LineError{"#DISTANCE PROG START needs ON, OFF or CLEAR"};
     else if (command.rfind("#SLOPE", 0) == 0) decode_slope(command);
+    else if (command.rfind("#DEL DIST2GO", 0) == 0) block.ddtg_end_marker = decode_end_marker(command);
     else throw LineError{"command '" + command.substr(0, command.find_first_of(" [")) + "' is not supported yet"};
   }
 
@@ -231,6 +232,30 @@ class LineDecoder {
     const std::optional<SlopeType> type = parse_slope_type(name);
     if (!type) throw LineError{"#SLOPE type '" + name + "' is not one of STEP, TRAPEZ, SIN2"};
     modal_.slope = *type;
+  }
+
+  // #DEL DIST2GO, #DEL DIST2GO [], #DEL DIST2GO [END=<32-bit>]: END as a
+  // number or an IEC literal '16#0105' (also 2# and 8#); default 1 (DDTG-5).
+  static uint32_t decode_end_marker(const std::string& command) {
+    std::string args = command.substr(12);
+    args.erase(std::remove(args.begin(), args.end(), ' '), args.end());
+    if (args.empty() || args == "[]") return 1;
+    const std::string prefix = "[END=";
+    if (args.rfind(prefix, 0) != 0 || args.back() != ']')
+      throw LineError{"#DEL DIST2GO takes [END=<32-bit mask>], e.g. [END='16#0105']"};
+    std::string value = args.substr(prefix.size(), args.size() - prefix.size() - 1);
+    if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') value = value.substr(1, value.size() - 2);
+    int base = 10;
+    if (const size_t hash = value.find('#'); hash != std::string::npos) {
+      base = std::atoi(value.substr(0, hash).c_str());
+      value = value.substr(hash + 1);
+      if (base != 2 && base != 8 && base != 16) throw LineError{"#DEL DIST2GO END: base must be 2#, 8# or 16#"};
+    }
+    char* end = nullptr;
+    const unsigned long long mask = value.empty() ? 0 : std::strtoull(value.c_str(), &end, base);
+    if (value.empty() || *end != '\0' || mask > 0xFFFFFFFFull || value[0] == '-')
+      throw LineError{"#DEL DIST2GO END '" + value + "' is not a 32-bit mask"};
+    return static_cast<uint32_t>(mask);
   }
 
   void set_arc_centre(Motion& m, std::optional<double> i, std::optional<double> j) {

@@ -24,7 +24,7 @@ struct Sample {
 // `edges` and holds it `hold` cycles (long enough for the stop, unless a
 // test clears it early).
 std::vector<Sample> run_with_ddtg(const std::string& program, std::vector<int64_t> edges, int64_t hold,
-                                  std::vector<Event>* events = nullptr) {
+                                  std::vector<Event>* events = nullptr, int32_t activation = 0) {
   const MachineConfig m = test::xyz_machine();
   Channel channel(m, program);
   logger::LimitChecker checker(m);
@@ -35,6 +35,7 @@ std::vector<Sample> run_with_ddtg(const std::string& program, std::vector<int64_
     bool command = false;
     for (int64_t edge : edges) command = command || (k >= edge && k < edge + hold);
     c.delete_distance_to_go = {command, true};
+    c.delete_distance_to_go_activation = {activation, activation != 0};
   });
   for (const auto& v : checker.finish().violations)
     FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
@@ -168,4 +169,55 @@ TEST_CASE("DDTG-6 delete distance to go in the last motion block: ends at the st
   bool warned = false;
   for (const Event& e : events) warned = warned || (e.id == 50810 && e.severity == Severity::warning);
   CHECK(warned);
+}
+
+TEST_CASE("DDTG-5 with an activation mask the short cut goes to the first valid #DEL DIST2GO marker", "[ddtg]") {
+  // The markers of TF5200_delete_distance_to_go.txt 2.2 on a short contour.
+  const std::string program =
+      "N010 G1 X100 F3000\nN020 Y10\nN030 X110\n"
+      "N041 #DEL DIST2GO\nN050 Y20\nN051 #DEL DIST2GO [END='16#01']\nN060 X150\n"
+      "N061 #DEL DIST2GO [END=2]\nN070 Y60\nN071 #DEL DIST2GO [END='16#0105']\nN080 X200\n"
+      "N081 #DEL DIST2GO [END=8]\nN090 Y100\nM30\n";
+  struct Case {
+    int32_t activation;
+    double x, y;  // where the short cut goes
+    int64_t block_nr;
+  };
+  for (const Case& c : {Case{2, 150, 20, 60}, Case{4, 150, 60, 70}, Case{0x100, 150, 60, 70}, Case{8, 200, 60, 80},
+                        Case{1, 110, 10, 30}, Case{0, 100, 10, 20}}) {
+    INFO("activation " << c.activation);
+    const auto samples = run_with_ddtg(program, {500}, 300, nullptr, c.activation);
+    const Sample* cut = first_active(samples);
+    REQUIRE(cut != nullptr);
+    CHECK(cut->block_nr == c.block_nr);
+    const Sample* last = cut;
+    for (const Sample& s : samples)
+      if (s.active) {
+        CHECK(off_line(s.x, s.y, cut->x, cut->y, c.x, c.y) < 1e-9);
+        last = &s;
+      }
+    CHECK(std::hypot(last->x - c.x, last->y - c.y) < 1.0);  // arrived (the next block starts there)
+    CHECK(samples.back().x == Approx(200).margin(1e-9));
+    CHECK(samples.back().y == Approx(100).margin(1e-9));
+  }
+  std::vector<Event> events;  // no marker valid for 0x10: DDTG-6
+  const auto samples = run_with_ddtg(program, {500}, 300, &events, 0x10);
+  CHECK(first_active(samples) == nullptr);
+  CHECK(samples.back().x < 100);
+  bool warned = false;
+  for (const Event& e : events) warned = warned || e.id == 50810;
+  CHECK(warned);
+}
+
+TEST_CASE("DDTG-9 with G91 the blocks after the short cut keep their programmed end points", "[ddtg]") {
+  // TF5200_delete_distance_to_go.txt 2.6: no contour offset.
+  const auto samples =
+      run_with_ddtg("N00 G90 G0 X0 Y0\nN10 G1 G91 X100 F3000\nN20 G91 Y100\nN30 G91 X-10 Y10 M30\n", {600}, 300);
+  const Sample* cut = first_active(samples);
+  REQUIRE(cut != nullptr);
+  CHECK(cut->x < 50);
+  for (const Sample& s : samples)
+    if (s.active) CHECK(off_line(s.x, s.y, cut->x, 0, 100, 100) < 1e-9);  // to N20's programmed end
+  CHECK(samples.back().x == Approx(90).margin(1e-9));
+  CHECK(samples.back().y == Approx(110).margin(1e-9));
 }

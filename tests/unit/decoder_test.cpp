@@ -72,7 +72,7 @@ TEST_CASE("KRN-2 decoder: an error names its line and block; the blocks before i
       {"N30 X1 X2", "programmed twice"},
       {"N30 G01 G02 X1", "two motion G codes"},
       {"N30 G02 X30 Y0 I5 J0", "does not lie on the circle"},
-      {"N30 #DEL DIST2GO", "'#DEL' is not supported yet"},
+      {"N30 #FLUSH", "'#FLUSH' is not supported yet"},
       {"N30 $FOR P1=0,1,1", "'$FOR' is not supported yet"},
       {"N30 X1 (open comment", "comment '(' is not closed"},
       {"N30 G01 X5 I3", "only allowed with G02/G03"},
@@ -125,6 +125,39 @@ TEST_CASE("KRN-1 DPS-2 decoder: #DISTANCE PROG START ON/OFF/CLEAR, G92 position 
     const DecodedProgram e = decode(bad);
     REQUIRE(e.error);
     CHECK(e.error->nc_line == 1);
+    CHECK(e.error->block_nr == 10);
+  }
+}
+
+TEST_CASE("KRN-1 DDTG-5 decoder: #DEL DIST2GO end markers, default END=1, IEC literals '16#0105'", "[decoder]") {
+  // The marker lines of TF5200_delete_distance_to_go.txt 2.2.
+  const DecodedProgram p = decode(
+      "N040 X130 F1000\n"
+      "N041 #DEL DIST2GO ;Default ACTIVATION = '16#01'\n"
+      "N051 #DEL DIST2GO [END='16#01'] ; short cut target\n"
+      "N061 #DEL DIST2GO [END=2]\n"
+      "N071 #DEL DIST2GO [END='16#0105']\n"
+      "N081 #del dist2go [ END = 8 ]\n"
+      "N091 #DEL DIST2GO []\n"
+      "N101 #DEL DIST2GO [END='2#1010']\n");
+  INFO((p.error ? p.error->message : std::string()));
+  REQUIRE_FALSE(p.error);
+  REQUIRE(p.blocks.size() == 8);
+  CHECK_FALSE(p.blocks[0].ddtg_end_marker);
+  const uint32_t expected[] = {1, 1, 2, 0x105, 8, 1, 10};
+  for (int i = 0; i < 7; ++i) {
+    INFO("marker " << i);
+    REQUIRE(p.blocks[i + 1].ddtg_end_marker);
+    CHECK(*p.blocks[i + 1].ddtg_end_marker == expected[i]);
+    CHECK_FALSE(p.blocks[i + 1].has_motion);
+  }
+  CHECK(p.blocks[4].block_nr == 71);
+  for (const char* bad : {"N10 #DEL DIST2GO [END='16#1FFFFFFFF']\n", "N10 #DEL DIST2GO [END=X]\n",
+                          "N10 #DEL DIST2GO [ACT=1]\n", "N10 #DEL DIST2GO [END='3#12']\n",
+                          "N10 #DEL DIST2GO [END=-1]\n"}) {
+    INFO(bad);
+    const DecodedProgram e = decode(bad);
+    REQUIRE(e.error);
     CHECK(e.error->block_nr == 10);
   }
 }
