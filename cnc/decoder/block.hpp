@@ -34,6 +34,15 @@ struct Block {
   // activation mask shares a bit with it (DDTG-5).
   std::optional<uint32_t> ddtg_end_marker;
   bool program_end = false;  // M30
+  // M functions of the line, output to the PLC before the line's motion and
+  // acknowledged by it before the motion starts (MVS_SVS), in order.
+  std::vector<int> m_functions;
+  double dwell_s = 0;  // #TIME: the path waits this long, s
+
+  // Anything for the interpolator to do besides moving.
+  bool has_command() const {
+    return distance_prog_start || ddtg_end_marker || !m_functions.empty() || dwell_s > 0 || program_end;
+  }
 };
 
 }  // namespace hil::cnc

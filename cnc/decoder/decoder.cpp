@@ -1,10 +1,15 @@
 #include "decoder.hpp"
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <regex>
 #include <sstream>
+
+#include "parameter_expression.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -39,6 +44,12 @@ std::string strip_comments(const std::string& line) {
   return out;
 }
 
+// A '#' or '$' command the decoder does not know, starting at code[i].
+LineError unsupported_command(const std::string& code, size_t i) {
+  const size_t end = code.find_first_of(" \t[", i);
+  return LineError{"command '" + code.substr(i, end - i) + "' is not supported yet"};
+}
+
 std::vector<Word> split_words(const std::string& code) {
   std::vector<Word> words;
   size_t i = 0;
@@ -48,10 +59,7 @@ std::vector<Word> split_words(const std::string& code) {
       ++i;
       continue;
     }
-    if (c == '#' || c == '$') {
-      const size_t end = code.find_first_of(" \t[", i);
-      throw LineError{"command '" + code.substr(i, end - i) + "' is not supported yet"};
-    }
+    if (c == '#' || c == '$') throw unsupported_command(code, i);
     if (!std::isalpha(c)) throw LineError{std::string("unexpected character '") + code[i] + "'"};
     const char letter = static_cast<char>(std::toupper(c));
     size_t j = i + 1;
@@ -119,7 +127,12 @@ class LineDecoder {
         throw LineError{"a '#' command must stand alone in its block (after the N number)"};
       if (!before.empty()) block.block_nr = integer_code(before[0]);
       decode_command(upper_words(code.substr(hash)), block);
-      if (block.distance_prog_start || block.ddtg_end_marker) out.push_back(block);
+      if (block.has_command()) out.push_back(block);
+      return true;
+    }
+    if (const size_t dollar = code.find('$'); dollar != std::string::npos) throw unsupported_command(code, dollar);
+    if (const size_t equals = code.find('='); equals != std::string::npos) {
+      assign_parameter(code, equals, block);
       return true;
     }
     const std::vector<Word> words = split_words(code);
@@ -159,8 +172,8 @@ class LineDecoder {
           modal_.feed = w.value / 60.0;
           break;
         case 'M':
-          if (integer_code(w) != 30) throw LineError{"M function '" + w.text + "' is not supported yet"};
-          block.program_end = true;
+          if (integer_code(w) == 30) block.program_end = true;
+          else block.m_functions.push_back(integer_code(w));
           break;
         case 'I': i_word = w.value; break;
         case 'J': j_word = w.value; break;
@@ -205,7 +218,7 @@ class LineDecoder {
       if (is_arc) set_arc_centre(m, i_word, j_word);
       position_ = target;
     }
-    if (block.has_motion || block.program_end) out.push_back(block);
+    if (block.has_motion || block.has_command()) out.push_back(block);
     return !block.program_end;
   }
 
@@ -219,6 +232,7 @@ class LineDecoder {
       throw LineError{"#DISTANCE PROG START needs ON, OFF or CLEAR"};
     else if (command.rfind("#SLOPE", 0) == 0) decode_slope(command);
     else if (command.rfind("#DEL DIST2GO", 0) == 0) block.ddtg_end_marker = decode_end_marker(command);
+    else if (command.rfind("#TIME", 0) == 0) block.dwell_s = decode_dwell(command);
     else throw LineError{"command '" + command.substr(0, command.find_first_of(" [")) + "' is not supported yet"};
   }
 
@@ -232,6 +246,32 @@ class LineDecoder {
     const std::optional<SlopeType> type = parse_slope_type(name);
     if (!type) throw LineError{"#SLOPE type '" + name + "' is not one of STEP, TRAPEZ, SIN2"};
     modal_.slope = *type;
+  }
+
+  // P<n> = <expression>, after an optional N number: a decoder variable.
+  void assign_parameter(const std::string& code, size_t equals, Block& block) {
+    static const std::regex assignment(R"(\s*(?:[Nn](\d+)\s+)?[Pp](\d+)\s*)");
+    std::smatch match;
+    const std::string left = code.substr(0, equals);
+    if (!std::regex_match(left, match, assignment))
+      throw LineError{"'=' is only allowed in a P parameter assignment, P<n> = <expression>"};
+    if (match[1].matched) block.block_nr = std::atoll(match[1].str().c_str());
+    try {
+      parameters_[std::atoi(match[2].str().c_str())] = evaluate_expression(code.substr(equals + 1), parameters_);
+    } catch (const std::invalid_argument& e) {
+      throw LineError{e.what()};
+    }
+  }
+
+  // #TIME <s>: dwell.
+  double decode_dwell(const std::string& command) const {
+    const std::string value = command.substr(5);
+    try {
+      const double seconds = evaluate_expression(value, parameters_);
+      if (seconds > 0) return seconds;
+    } catch (const std::invalid_argument&) {
+    }
+    throw LineError{"#TIME needs a dwell time > 0 in s"};
   }
 
   // #DEL DIST2GO, #DEL DIST2GO [], #DEL DIST2GO [END=<32-bit>]: END as a
@@ -277,6 +317,7 @@ class LineDecoder {
 
   const MachineConfig& machine_;
   std::vector<double> position_;             // machine coordinates
+  ParameterValues parameters_;               // P parameters
   std::vector<double> offset_ = std::vector<double>(position_.size(), 0.0);  // G92: machine - program
   ModalState modal_;
 };

@@ -65,7 +65,10 @@ TEST_CASE("KRN-2 decoder: an error names its line and block; the blocks before i
   };
   const Case cases[] = {
       {"N30 G17 X5", "G code 'G17' is not supported yet"},
-      {"N30 M3", "M function 'M3' is not supported yet"},
+      {"N30 P1 = 2 * P9", "P9 has no value yet"},
+      {"N30 P1 = 2 / [1 - 1]", "division by zero"},
+      {"N30 X=5", "'=' is only allowed in a P parameter assignment"},
+      {"N30 #TIME 0", "#TIME needs a dwell time > 0"},
       {"N30 Q5", "Q is not an axis"},
       {"N30 X", "needs a number"},
       {"N30 X1.2.3", "malformed number"},
@@ -160,4 +163,31 @@ TEST_CASE("KRN-1 DDTG-5 decoder: #DEL DIST2GO end markers, default END=1, IEC li
     REQUIRE(e.error);
     CHECK(e.error->block_nr == 10);
   }
+}
+
+TEST_CASE("KRN-1 DDTG-7 decoder: M functions, P parameters with arithmetic, #TIME dwell", "[decoder]") {
+  // TF5200_delete_distance_to_go.txt 4.5, and arithmetic on P parameters.
+  const DecodedProgram p = decode(
+      "N005 X0 Y0 Z0 F1000\n"
+      "N010 X100 ;interrupt and delete distance to go\n"
+      "N015 M48\n"
+      "N016 P1=1\n"
+      "N017 #TIME 10\n"
+      "N020 Y100 M7 M8\n"
+      "N025 P2 = [P1 + 2] * -1.5 / 3 (round brackets: a comment)\n"
+      "N026 #TIME -P2\n"
+      "N030 X90 Y110\n"
+      "N040 M30\n");
+  INFO((p.error ? p.error->message : std::string()));
+  REQUIRE_FALSE(p.error);
+  REQUIRE(p.blocks.size() == 7);  // the P assignments are decoder work: no blocks
+  CHECK(p.blocks[1].block_nr == 15);
+  CHECK(p.blocks[1].m_functions == std::vector<int>{48});
+  CHECK_FALSE(p.blocks[1].has_motion);
+  CHECK(p.blocks[2].block_nr == 17);
+  CHECK(p.blocks[2].dwell_s == 10);
+  CHECK(p.blocks[3].has_motion);
+  CHECK(p.blocks[3].m_functions == std::vector<int>{7, 8});
+  CHECK(p.blocks[4].dwell_s == Approx(1.5));  // -P2 = -((1 + 2) * -1.5 / 3)
+  CHECK(p.blocks[6].program_end);
 }
