@@ -53,6 +53,9 @@ struct HliControl {
   ControlUnitValue override;
   ControlUnitBool delete_distance_to_go;
   ControlUnitValue delete_distance_to_go_activation;
+  // A rising edge of command_w while enable_w acknowledges the M function
+  // the CNC waits for (m_function_request_r).
+  ControlUnitBool m_function_ack;
 };
 
 struct HliState {
@@ -72,6 +75,10 @@ struct HliState {
   ControlUnitState delete_distance_to_go;
   ControlUnitValueState delete_distance_to_go_activation;
   bool delete_distance_to_go_active_r = false;  // a short cut runs (DDTG-4)
+  // An M function is output and the path waits for the PLC's
+  // acknowledgement (MVS_SVS); its number.
+  bool m_function_request_r = false;
+  int32_t m_function_nr_r = 0;
 };
 
 // HLI length unit: 0.1 um.

@@ -42,6 +42,7 @@ Condition parse_condition(const YAML::Node& node, const std::string& where) {
     else if (key == "dist_prog_start_mm") c.dist_prog_start_mm = item.second.as<double>();
     else if (key == "channel_state") c.channel_state = channel_state_of(item.second, where);
     else if (key == "delete_distance_to_go_active_r") c.delete_distance_to_go_active_r = item.second.as<bool>();
+    else if (key == "m_function_nr_r") c.m_function_nr_r = item.second.as<int32_t>();
     else throw ConfigError(where + ": unknown trigger '" + key + "'");
   }
   return c;
@@ -135,6 +136,7 @@ bool Condition::holds(const HliState& s, double cycle_time_s) const {
   if (channel_state && s.channel_state != *channel_state) return false;
   if (delete_distance_to_go_active_r && s.delete_distance_to_go_active_r != *delete_distance_to_go_active_r)
     return false;
+  if (m_function_nr_r && !(s.m_function_request_r && s.m_function_nr_r == *m_function_nr_r)) return false;
   return true;
 }
 
@@ -149,6 +151,7 @@ std::string Condition::describe() const {
   if (channel_state) out << sep << "channel_state=" << to_string(*channel_state), sep = " ";
   if (delete_distance_to_go_active_r)
     out << sep << "delete_distance_to_go_active_r=" << (*delete_distance_to_go_active_r ? "true" : "false"), sep = " ";
+  if (m_function_nr_r) out << sep << "m_function_nr_r=" << *m_function_nr_r, sep = " ";
   return out.str();
 }
 
@@ -174,6 +177,8 @@ Scenario parse_scenario(const YAML::Node& root) {
     if (s.settle_time_s < 0) throw ConfigError("scenario: run.settle_time_s must be >= 0");
     const YAML::Node plc = root["plc"];
     if (plc) s.timeline = parse_list<TimelineStep>(plc["timeline"], "plc.timeline", parse_step);
+    if (plc && plc["m_function_ack_cycles"]) s.m_function_ack_cycles = plc["m_function_ack_cycles"].as<int>();
+    if (s.m_function_ack_cycles < 0) throw ConfigError("scenario: plc.m_function_ack_cycles must be >= 0");
     s.expectations = parse_list<Expectation>(root["expect"], "expect", parse_expectation);
     s.expected_events = parse_list<EventExpectation>(root["expect_events"], "expect_events",
                                                      parse_event_expectation);

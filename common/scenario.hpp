@@ -25,6 +25,7 @@ struct Condition {
   std::optional<double> dist_prog_start_mm;   // covered distance >= value
   std::optional<ChannelState> channel_state;  // == value
   std::optional<bool> delete_distance_to_go_active_r;  // == value
+  std::optional<int32_t> m_function_nr_r;     // this M function waits for acknowledgement
 
   bool holds(const HliState& state, double cycle_time_s) const;
   std::string describe() const;
@@ -83,6 +84,9 @@ struct Scenario {
   double max_time_s = 60;      // the CNC aborts the run after this much simulated time
   double settle_time_s = 0.1;  // cycles run after program end, for drives and PLC
   std::vector<TimelineStep> timeline;
+  // The PLC acknowledges each M function this many cycles after the CNC
+  // outputs it; 0: only the timeline acknowledges (m_function_ack).
+  int m_function_ack_cycles = 1;
   std::vector<Expectation> expectations;
   std::vector<EventExpectation> expected_events;
   std::vector<ViolationExpectation> expected_violations;

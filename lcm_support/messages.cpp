@@ -49,6 +49,8 @@ hil::hli_state_t to_message(const HliState& s, int64_t utime) {
   m.delete_distance_to_go_activation.request_r = s.delete_distance_to_go_activation.request_r;
   m.delete_distance_to_go_activation.state_r = s.delete_distance_to_go_activation.state_r;
   m.delete_distance_to_go_active_r = s.delete_distance_to_go_active_r;
+  m.m_function_request_r = s.m_function_request_r;
+  m.m_function_nr_r = s.m_function_nr_r;
   return m;
 }
 
@@ -75,6 +77,8 @@ HliState from_message(const hil::hli_state_t& m) {
   s.delete_distance_to_go_activation.request_r = m.delete_distance_to_go_activation.request_r;
   s.delete_distance_to_go_activation.state_r = m.delete_distance_to_go_activation.state_r;
   s.delete_distance_to_go_active_r = m.delete_distance_to_go_active_r;
+  s.m_function_request_r = m.m_function_request_r;
+  s.m_function_nr_r = m.m_function_nr_r;
   return s;
 }
 
@@ -92,6 +96,8 @@ hil::hli_control_t to_message(const HliControl& c, int64_t utime) {
   m.delete_distance_to_go.enable_w = c.delete_distance_to_go.enable_w;
   m.delete_distance_to_go_activation.command_w = c.delete_distance_to_go_activation.command_w;
   m.delete_distance_to_go_activation.enable_w = c.delete_distance_to_go_activation.enable_w;
+  m.m_function_ack.command_w = c.m_function_ack.command_w;
+  m.m_function_ack.enable_w = c.m_function_ack.enable_w;
   return m;
 }
 
@@ -108,6 +114,8 @@ HliControl from_message(const hil::hli_control_t& m) {
   c.delete_distance_to_go.enable_w = m.delete_distance_to_go.enable_w;
   c.delete_distance_to_go_activation.command_w = m.delete_distance_to_go_activation.command_w;
   c.delete_distance_to_go_activation.enable_w = m.delete_distance_to_go_activation.enable_w;
+  c.m_function_ack.command_w = m.m_function_ack.command_w;
+  c.m_function_ack.enable_w = m.m_function_ack.enable_w;
   return c;
 }
 

@@ -10,6 +10,7 @@ const std::vector<std::pair<std::string, ControlUnitBool HliControl::*>> bool_un
     {"program_start", &HliControl::program_start},
     {"feedhold", &HliControl::feedhold},
     {"delete_distance_to_go", &HliControl::delete_distance_to_go},
+    {"m_function_ack", &HliControl::m_function_ack},
 };
 const std::vector<std::pair<std::string, ControlUnitValue HliControl::*>> value_units = {
     {"override", &HliControl::override},

@@ -11,6 +11,7 @@ namespace hil::plc {
 ScenarioEngine::ScenarioEngine(const Scenario& scenario)
     : timeline_(scenario.timeline), fired_(scenario.timeline.size(), false),
       expected_events_(scenario.expected_events), allow_errors_(scenario.allow_errors),
+      m_function_ack_cycles_(scenario.m_function_ack_cycles),
       cycle_time_s_(scenario.machine.cycle_time_s()) {
   for (size_t i = 0; i < timeline_.size(); ++i)
     for (const ControlWrite& write : timeline_[i].set) {
@@ -30,6 +31,18 @@ ScenarioEngine::ScenarioEngine(const Scenario& scenario)
 
 const HliControl& ScenarioEngine::cycle(const HliState& state) {
   control_.cycle = state.cycle;
+  // The PLC's M function handling: acknowledge with a one-cycle pulse.
+  if (m_function_ack_cycles_ > 0) {
+    ControlUnitBool& ack = control_.m_function_ack;
+    ack.enable_w = true;
+    if (ack.command_w) {
+      ack.command_w = false;
+    } else if (state.m_function_request_r && ++m_function_waited_ >= m_function_ack_cycles_) {
+      ack.command_w = true;
+      m_function_waited_ = 0;
+    }
+    if (!state.m_function_request_r) m_function_waited_ = 0;
+  }
   for (size_t i = 0; i < timeline_.size(); ++i) {
     if (fired_[i] || !timeline_[i].when.holds(state, cycle_time_s_)) continue;
     fired_[i] = true;

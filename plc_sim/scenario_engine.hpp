@@ -42,6 +42,8 @@ class ScenarioEngine {
   std::vector<EventExpectation> expected_events_;
   std::vector<Event> seen_events_;
   bool allow_errors_;
+  int m_function_ack_cycles_;
+  int m_function_waited_ = 0;  // cycles the current M function has waited
   double cycle_time_s_;
   HliControl control_;
 };

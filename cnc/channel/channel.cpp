@@ -42,7 +42,8 @@ void Channel::drive_error(const std::string& axis, const std::string& what) {
 }
 
 void Channel::update_velocity_factor() {
-  const bool stop = hli_.feedhold.state_r || ddtg_requested_ || hli_.channel_state == ChannelState::error;
+  const bool stop = hli_.feedhold.state_r || ddtg_requested_ || hli_.channel_state == ChannelState::error ||
+                    !synchronous_.empty();
   look_ahead_.set_velocity_factor(stop ? 0.0 : hli_.override.state_r / static_cast<double>(override_full));
   replan_ = true;
 }
@@ -60,6 +61,7 @@ void Channel::step(int64_t cycle, const HliControl& control) {
   apply_program_start(control.program_start);
   if (hli_.channel_state == ChannelState::active || error_stop_) {
     const double t = static_cast<double>(cycle - start_cycle_) * machine_.cycle_time_s();
+    run_synchronous_actions(control, t);
     interpolate(t);
     const bool standing = look_ahead_.empty() || t - plan_start_ >= plan_.duration();
     if (error_stop_ && standing) error_stop_ = false;
@@ -140,6 +142,38 @@ void Channel::apply_delete_distance_to_go(const HliControl& control) {
   const ControlUnitValue& activation = control.delete_distance_to_go_activation;
   hli_.delete_distance_to_go_activation.request_r = activation.enable_w;
   hli_.delete_distance_to_go_activation.state_r = activation.enable_w ? activation.command_w : 0;
+}
+
+void Channel::queue_synchronous_actions(const Block& block) {
+  for (int m : block.m_functions) synchronous_.push_back({m, 0});
+  if (block.dwell_s > 0) synchronous_.push_back({-1, block.dwell_s});
+  if (!synchronous_.empty()) update_velocity_factor();
+}
+
+void Channel::run_synchronous_actions(const HliControl& control, double t) {
+  const ControlUnitBool& ack = control.m_function_ack;
+  const bool acknowledged = ack.command_w && ack.enable_w && !previous_m_ack_command_;
+  previous_m_ack_command_ = ack.command_w;
+  if (synchronous_.empty()) return;
+  // Each action done lets the next one start in the same cycle.
+  while (!synchronous_.empty()) {
+    const SynchronousAction& action = synchronous_.front();
+    if (action.m_function >= 0) {
+      if (!hli_.m_function_request_r) {
+        hli_.m_function_request_r = true;  // output; acknowledged in a later cycle
+        hli_.m_function_nr_r = action.m_function;
+        return;
+      }
+      if (!acknowledged) return;
+      hli_.m_function_request_r = false;
+    } else {
+      if (dwell_end_ < 0) dwell_end_ = t + action.dwell_s;
+      if (t < dwell_end_ - 1e-9) return;
+      dwell_end_ = -1;
+    }
+    synchronous_.pop_front();
+  }
+  update_velocity_factor();
 }
 
 void Channel::start_short_cut(double t) {
@@ -227,7 +261,15 @@ void Channel::start_program() {
 void Channel::refill_look_ahead() {
   for (; !look_ahead_.full() && next_to_look_ahead_ < blocks_.size(); ++next_to_look_ahead_) {
     const Block& block = blocks_[next_to_look_ahead_];
-    if (block.has_motion) look_ahead_.push(next_to_look_ahead_, PathSegment(block.motion, machine_), block.slope);
+    if (!block.has_motion) continue;
+    // M functions or a dwell on its line or since the last motion block: the
+    // path stands still where it starts.
+    bool stop_before = false;
+    for (size_t i = next_to_look_ahead_ + 1; i-- > 0;) {
+      if (i < next_to_look_ahead_ && blocks_[i].has_motion) break;
+      stop_before = stop_before || !blocks_[i].m_functions.empty() || blocks_[i].dwell_s > 0;
+    }
+    look_ahead_.push(next_to_look_ahead_, PathSegment(block.motion, machine_), block.slope, stop_before);
   }
 }
 
@@ -237,6 +279,7 @@ void Channel::begin_front(const MotionState& state, double t0) {
   const Block& block = blocks_[front.block_index];
   hli_.block_nr_r = block.block_nr;
   hli_.block_count_r = block.nc_line;
+  queue_synchronous_actions(block);  // its M functions go out before its motion (MVS_SVS)
   plan(state, t0);
 }
 
@@ -266,6 +309,7 @@ void Channel::run_blocks_without_motion(size_t up_to) {
     const Block& block = blocks_[next_to_run_];
     hli_.block_nr_r = block.block_nr;
     hli_.block_count_r = block.nc_line;
+    queue_synchronous_actions(block);
     if (!block.distance_prog_start) continue;
     switch (*block.distance_prog_start) {
       case DistanceProgStart::on: dps_counting_ = true; break;
@@ -310,6 +354,7 @@ void Channel::interpolate(double t) {
     run_blocks_without_motion(blocks_.size());
     hli_.dist_prog_start = dps_before_front_ * hli_units_per_mm;
     hli_.path_velocity = 0;
+    if (!synchronous_.empty()) return;  // the program ends once its last M functions and dwells are done
     if (hli_.channel_state != ChannelState::error)
       hli_.channel_state = decode_failed_ ? ChannelState::error : ChannelState::program_end;
     return;

@@ -3,6 +3,7 @@
 // and interpolation of the decoded program at the cycle time along the
 // path planned by the look-ahead (KRN-3). One call of step() is one cycle.
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,11 @@ class Channel {
   // the next motion block by a linear short cut to the latter's end point
   // (DDTG-5: everything up to the first valid end marker).
   void start_short_cut(double t);
+  // M functions and dwells of a block, in order, before its motion.
+  void queue_synchronous_actions(const Block& block);
+  // Outputs the next M function, takes the PLC's acknowledgement, counts
+  // down a dwell; the path moves again once none is left.
+  void run_synchronous_actions(const HliControl& control, double t);
   void start_program();
   void refill_look_ahead();
   // Makes the look-ahead's front block the one in the interpolator, after
@@ -85,6 +91,15 @@ class Channel {
   bool previous_ddtg_command_ = false;
   size_t short_cut_target_ = 0;    // while a short cut runs: the block whose end point it goes to
   bool short_cut_rapid_ = false;   // the short cut runs in G00 (DDTG-2)
+  // What the path waits for, in order: an M function's acknowledgement
+  // (m_function >= 0) or a dwell (dwell_s > 0), before it moves on.
+  struct SynchronousAction {
+    int m_function = -1;
+    double dwell_s = 0;
+  };
+  std::deque<SynchronousAction> synchronous_;
+  double dwell_end_ = -1;          // s after program start, while the front action is a dwell
+  bool previous_m_ack_command_ = false;
   // The channel starts once: ON and CLEAR, the defaults at program start (DPS-2).
   bool dps_counting_ = true;       // #DISTANCE PROG START ON
   double dps_before_front_ = 0;    // mm counted before the front block

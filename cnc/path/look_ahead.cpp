@@ -19,11 +19,11 @@ double highest_entry_velocity(double v_exit, double distance, double v_cap, cons
 
 LookAhead::LookAhead(const MachineConfig& machine, size_t capacity) : machine_(machine), capacity_(capacity) {}
 
-void LookAhead::push(size_t block_index, PathSegment segment, SlopeType slope) {
+void LookAhead::push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before) {
   double jerk_share = 1;
   if (!blocks_.empty()) {
     const Junction j = junction(blocks_.back().segment, segment, machine_);
-    blocks_.back().junction_limit = j.v_max;
+    blocks_.back().junction_limit = stop_before ? 0.0 : j.v_max;
     if (j.curvature_step) blocks_.back().jerk_share = jerk_share = curvature_step_jerk_share;
   }
   blocks_.push_back({block_index, std::move(segment), slope, 0.0, jerk_share, 0.0, true});

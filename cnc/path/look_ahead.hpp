@@ -50,7 +50,9 @@ class LookAhead {
   size_t size() const { return blocks_.size(); }
   const LookAheadBlock& front() const { return blocks_.front(); }
 
-  void push(size_t block_index, PathSegment segment, SlopeType slope);
+  // stop_before: the path must stand still where the block starts (an M
+  // function synchronised before its motion, a dwell).
+  void push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before = false);
   void pop_front() { blocks_.pop_front(); }
   void clear() { blocks_.clear(); }
 

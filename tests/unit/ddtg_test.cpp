@@ -221,3 +221,95 @@ TEST_CASE("DDTG-9 with G91 the blocks after the short cut keep their programmed 
   CHECK(samples.back().x == Approx(90).margin(1e-9));
   CHECK(samples.back().y == Approx(110).margin(1e-9));
 }
+
+namespace {
+
+struct SyncSample {
+  int64_t cycle;
+  double x, y, v;
+  bool active, m_request;
+  int32_t m_nr;
+};
+
+// Runs `program`, acknowledging each M function `ack_after` cycles after
+// it is output; optionally with one delete distance to go at `ddtg_at`.
+std::vector<SyncSample> run_with_m_functions(const std::string& program, int ack_after, int64_t ddtg_at = -1) {
+  const MachineConfig m = test::xyz_machine();
+  Channel channel(m, program);
+  logger::LimitChecker checker(m);
+  std::vector<SyncSample> samples;
+  int waited = 0;
+  run_program(channel, &checker, [&](int64_t k, const HliState& s, HliControl& c) {
+    samples.push_back({k, channel.setpoints()[0].position, channel.setpoints()[1].position, s.path_velocity,
+                       s.delete_distance_to_go_active_r, s.m_function_request_r, s.m_function_nr_r});
+    c.m_function_ack.enable_w = true;
+    if (c.m_function_ack.command_w) c.m_function_ack.command_w = false;
+    else if (s.m_function_request_r && ++waited >= ack_after) c.m_function_ack.command_w = true, waited = 0;
+    c.delete_distance_to_go = {ddtg_at >= 0 && k >= ddtg_at && !s.delete_distance_to_go_active_r && k < ddtg_at + 400,
+                               true};
+  });
+  for (const auto& v : checker.finish().violations)
+    FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+  samples.push_back({channel.hli().cycle, channel.setpoints()[0].position, channel.setpoints()[1].position, 0,
+                     false, false, 0});
+  return samples;
+}
+
+}  // namespace
+
+TEST_CASE("KRN-1 M functions (MVS_SVS) and #TIME: the path stands still until acknowledged, then dwells",
+          "[ddtg]") {
+  const auto samples = run_with_m_functions("N10 G1 X50 F3000\nN20 M48\nN30 #TIME 0.5\nN40 X100 M7\nM30\n", 100);
+  int64_t m48_from = -1, m48_to = -1, m7_from = -1, moving_again = -1;
+  for (const SyncSample& s : samples) {
+    if (s.m_request && s.m_nr == 48) {
+      if (m48_from < 0) m48_from = s.cycle;
+      m48_to = s.cycle;
+      CHECK(s.x == Approx(50).margin(1e-9));  // at rest on N10's end, before N40's motion
+      CHECK(s.v == 0);
+    }
+    if (s.m_request && s.m_nr == 7) {
+      if (m7_from < 0) m7_from = s.cycle;
+      CHECK(s.x == Approx(50).margin(1e-9));
+    }
+    if (m7_from >= 0 && moving_again < 0 && s.x > 50 + 1e-9) moving_again = s.cycle;
+  }
+  REQUIRE(m48_from >= 0);
+  CHECK(m48_to - m48_from + 1 == 100);  // output until the PLC acknowledged it
+  REQUIRE(m7_from >= 0);
+  CHECK(m7_from - m48_to >= 500);       // the dwell of 0.5 s between them
+  CHECK(m7_from - m48_to <= 502);
+  CHECK(moving_again > m7_from + 99);   // N40 moves only after M7 was acknowledged
+  CHECK(samples.back().x == Approx(100).margin(1e-9));
+}
+
+TEST_CASE("DDTG-7 commands in the deleted contour run at the interruption point, before the short cut",
+          "[ddtg]") {
+  // TF5200_delete_distance_to_go.txt 4.5 (a shorter dwell), DDTG in N010.
+  const auto samples = run_with_m_functions(
+      "N005 X0 Y0 Z0 F3000\nN010 X100\nN015 M48\nN016 P1=1\nN017 #TIME 1\nN020 Y100 M7\nN030 X90 Y110\nN040 M30\n",
+      20, 500);
+  int64_t m48 = -1, m7 = -1, cut = -1;
+  double stop_x = -1;
+  for (const SyncSample& s : samples) {
+    if (s.m_request && s.m_nr == 48 && m48 < 0) {
+      m48 = s.cycle;
+      stop_x = s.x;
+      CHECK(s.x < 60);  // at the interruption point in N010, not at its end
+      CHECK(s.y == 0);
+      CHECK(s.active);  // the short cut is the active block; it moves once these are done
+    }
+    if (s.m_request && s.m_nr == 7 && m7 < 0) {
+      m7 = s.cycle;  // case A: the M function of the target's line, also at the interruption point
+      CHECK(s.x == stop_x);
+      CHECK(s.y == 0);
+    }
+    if (s.active && s.y > 1e-9 && cut < 0) cut = s.cycle;
+  }
+  REQUIRE(m48 >= 0);
+  REQUIRE(m7 > m48);
+  CHECK(m7 - m48 >= 20 + 1000);  // acknowledged after 20 cycles, then #TIME 1
+  REQUIRE(cut > m7);             // the short cut moves after all of it
+  CHECK(samples.back().x == Approx(90).margin(1e-9));
+  CHECK(samples.back().y == Approx(110).margin(1e-9));
+}
