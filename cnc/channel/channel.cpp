@@ -5,6 +5,7 @@
 
 #include "decoder.hpp"
 #include "position_profile.hpp"
+#include "short_cut_target.hpp"
 
 namespace hil::cnc {
 
@@ -189,27 +190,13 @@ void Channel::start_short_cut(double t) {
   if (dps_counting_ && length > 0) dps_before_front_ += front.segment.covered_distance() * s / length;
   // The rest of the front block is dropped; what lies between it and the
   // target (non-motion blocks) runs at the stop position, before the short cut.
-  const size_t interrupted = front.block_index;
-  next_to_run_ = interrupted + 1;
-  // DDTG-1: to the end point of the next motion block. DDTG-5: with an
-  // activation mask, to where the first valid #DEL DIST2GO marker stands
-  // (the end of the last motion block before it).
   const uint32_t mask = static_cast<uint32_t>(hli_.delete_distance_to_go_activation.state_r);
-  size_t target = blocks_.size();
-  if (mask == 0) {
-    target = next_to_run_;
-    while (target < blocks_.size() && !blocks_[target].has_motion) ++target;
-  } else {
-    for (size_t i = next_to_run_; i < blocks_.size() && target == blocks_.size(); ++i) {
-      if (!blocks_[i].ddtg_end_marker || (*blocks_[i].ddtg_end_marker & mask) == 0) continue;
-      target = i - 1;
-      while (target > interrupted && !blocks_[target].has_motion) --target;
-    }
-  }
+  const std::optional<size_t> found = short_cut_target(blocks_, front.block_index, mask);
+  next_to_run_ = front.block_index + 1;
   look_ahead_.clear();
   hli_.delete_distance_to_go_active_r = false;
   update_velocity_factor();
-  if (target >= blocks_.size()) {  // DDTG-6: no motion block left to short-cut to
+  if (!found) {  // DDTG-6: no motion block left to short-cut to
     Event none;
     none.severity = Severity::warning;
     none.id = 50810;
@@ -222,6 +209,7 @@ void Channel::start_short_cut(double t) {
     next_to_look_ahead_ = blocks_.size();
     return;
   }
+  const size_t target = *found;
   Motion cut;
   cut.type = rapid ? MotionType::rapid : MotionType::linear;  // DDTG-2: linear, G00 if the interrupted block was
   cut.start = stop;

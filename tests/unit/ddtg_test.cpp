@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "channel_runner.hpp"
+#include "decoder.hpp"
+#include "short_cut_target.hpp"
 #include "test_machine.hpp"
 
 using namespace hil;
@@ -312,4 +314,18 @@ TEST_CASE("DDTG-7 commands in the deleted contour run at the interruption point,
   REQUIRE(cut > m7);             // the short cut moves after all of it
   CHECK(samples.back().x == Approx(90).margin(1e-9));
   CHECK(samples.back().y == Approx(110).margin(1e-9));
+}
+
+TEST_CASE("DDTG-5 DDTG-6 short-cut targets: next motion block, or before the first valid marker", "[ddtg]") {
+  const DecodedProgram p = decode_program(
+      "N10 G1 X10 F1000\nN20 Y10\nN21 #DEL DIST2GO\nN22 M8\nN30 X20\nN31 #DEL DIST2GO [END=6]\nN40 Y20\nM30\n",
+      test::xyz_machine(), {0, 0, 0});
+  REQUIRE_FALSE(p.error);
+  auto nr = [&](std::optional<size_t> i) { return i ? p.blocks[*i].block_nr : -1; };
+  CHECK(nr(short_cut_target(p.blocks, 0, 0)) == 20);   // DDTG-1: the next motion block
+  CHECK(nr(short_cut_target(p.blocks, 0, 1)) == 20);   // N21 (END=1): the last motion block before it
+  CHECK(nr(short_cut_target(p.blocks, 0, 4)) == 30);   // N31 (END=6 & 4)
+  CHECK(nr(short_cut_target(p.blocks, 1, 1)) == 20);   // interrupted in N20, marker right after: N20 itself
+  CHECK(nr(short_cut_target(p.blocks, 0, 8)) == -1);   // no valid marker: DDTG-6
+  CHECK(nr(short_cut_target(p.blocks, 6, 0)) == -1);   // in the last motion block: DDTG-6
 }
