@@ -118,6 +118,8 @@ MachineConfig parse_machine_config(const YAML::Node& node) {
     if (node["override_max_percent"]) config.override_max_percent = node["override_max_percent"].as<int32_t>();
     if (config.override_max_percent < 100 || config.override_max_percent > 200)
       throw ConfigError("machine: override_max_percent must be within 100 .. 200");
+    if (node["fb_storage_size"]) config.fb_storage_size = node["fb_storage_size"].as<int64_t>();
+    if (config.fb_storage_size < 0) throw ConfigError("machine: P-STUP-00033 fb_storage_size must be >= 0");
     const YAML::Node axes = node["axes"];
     if (!axes || !axes.IsSequence() || axes.size() == 0)
       throw ConfigError("machine: 'axes' must be a non-empty list");

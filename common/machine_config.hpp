@@ -56,6 +56,9 @@ struct MachineConfig {
   int32_t cycle_time_us = 1000;
   // Highest feed override the PLC may set, in %; above 100 only if configured.
   int32_t override_max_percent = 100;
+  // P-STUP-00033 fb_storage_size: memory for backward motion on the path,
+  // bytes; delete distance to go needs it > 0 (DDTG-11). TF5200's default 0.
+  int64_t fb_storage_size = 0;
   std::vector<AxisConfig> axes;
 
   double cycle_time_s() const { return cycle_time_us * 1e-6; }

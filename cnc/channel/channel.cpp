@@ -136,8 +136,18 @@ void Channel::apply_delete_distance_to_go(const HliControl& control) {
     ddtg_requested_ = false;
     update_velocity_factor();
   } else if (rising && commanded && hli_.channel_state == ChannelState::active && !ddtg_requested_) {
-    ddtg_requested_ = true;
-    update_velocity_factor();
+    if (machine_.fb_storage_size > 0) {
+      ddtg_requested_ = true;
+      update_velocity_factor();
+    } else {  // DDTG-11
+      Event refused;
+      refused.severity = Severity::warning;
+      refused.parameter = "P-STUP-00033";
+      refused.nc_line = hli_.block_count_r;
+      refused.block_nr = hli_.block_nr_r;
+      refused.message = "delete distance to go ignored: it needs P-STUP-00033 fb_storage_size > 0";
+      raise(refused);
+    }
   }
   // The end marker mask (DDTG-5), in force from the next short cut on.
   const ControlUnitValue& activation = control.delete_distance_to_go_activation;

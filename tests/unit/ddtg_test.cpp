@@ -329,3 +329,21 @@ TEST_CASE("DDTG-5 DDTG-6 short-cut targets: next motion block, or before the fir
   CHECK(nr(short_cut_target(p.blocks, 0, 8)) == -1);   // no valid marker: DDTG-6
   CHECK(nr(short_cut_target(p.blocks, 6, 0)) == -1);   // in the last motion block: DDTG-6
 }
+
+TEST_CASE("DDTG-11 delete distance to go needs P-STUP-00033 > 0", "[ddtg]") {
+  MachineConfig m = test::xyz_machine();
+  REQUIRE(m.fb_storage_size > 0);  // the shipped machine has it
+  m.fb_storage_size = 0;
+  Channel channel(m, "N10 G1 X80 F3000\nN20 Y60\nM30\n");
+  bool warned = false, active = false;
+  run_program(channel, nullptr, [&](int64_t k, const HliState& s, HliControl& c) {
+    c.delete_distance_to_go = {k >= 500 && k < 700, true};
+    active = active || s.delete_distance_to_go_active_r || s.delete_distance_to_go.state_r;
+    for (const Event& e : channel.take_events())
+      warned = warned || (e.parameter == "P-STUP-00033" && e.severity == Severity::warning);
+  });
+  CHECK(warned);
+  CHECK_FALSE(active);
+  CHECK(channel.setpoints()[0].position == Approx(80).margin(1e-9));  // the contour ran as programmed
+  CHECK(channel.setpoints()[1].position == Approx(60).margin(1e-9));
+}
