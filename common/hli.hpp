@@ -56,6 +56,9 @@ struct HliControl {
   // A rising edge of command_w while enable_w acknowledges the M function
   // the CNC waits for (m_function_request_r).
   ControlUnitBool m_function_ack;
+  // Backward motion on the path (bahn_mc_control.backward_motion): not built;
+  // a request holds the path with a warning until withdrawn (DDTG-10).
+  ControlUnitBool backward_motion;
 };
 
 struct HliState {
@@ -79,6 +82,7 @@ struct HliState {
   // acknowledgement (MVS_SVS); its number.
   bool m_function_request_r = false;
   int32_t m_function_nr_r = 0;
+  ControlUnitState backward_motion;  // state_r stays FALSE: never moving backward
 };
 
 // HLI length unit: 0.1 um.

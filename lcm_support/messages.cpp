@@ -51,6 +51,8 @@ hil::hli_state_t to_message(const HliState& s, int64_t utime) {
   m.delete_distance_to_go_active_r = s.delete_distance_to_go_active_r;
   m.m_function_request_r = s.m_function_request_r;
   m.m_function_nr_r = s.m_function_nr_r;
+  m.backward_motion.request_r = s.backward_motion.request_r;
+  m.backward_motion.state_r = s.backward_motion.state_r;
   return m;
 }
 
@@ -79,6 +81,8 @@ HliState from_message(const hil::hli_state_t& m) {
   s.delete_distance_to_go_active_r = m.delete_distance_to_go_active_r;
   s.m_function_request_r = m.m_function_request_r;
   s.m_function_nr_r = m.m_function_nr_r;
+  s.backward_motion.request_r = m.backward_motion.request_r;
+  s.backward_motion.state_r = m.backward_motion.state_r;
   return s;
 }
 
@@ -98,6 +102,8 @@ hil::hli_control_t to_message(const HliControl& c, int64_t utime) {
   m.delete_distance_to_go_activation.enable_w = c.delete_distance_to_go_activation.enable_w;
   m.m_function_ack.command_w = c.m_function_ack.command_w;
   m.m_function_ack.enable_w = c.m_function_ack.enable_w;
+  m.backward_motion.command_w = c.backward_motion.command_w;
+  m.backward_motion.enable_w = c.backward_motion.enable_w;
   return m;
 }
 
@@ -116,6 +122,8 @@ HliControl from_message(const hil::hli_control_t& m) {
   c.delete_distance_to_go_activation.enable_w = m.delete_distance_to_go_activation.enable_w;
   c.m_function_ack.command_w = m.m_function_ack.command_w;
   c.m_function_ack.enable_w = m.m_function_ack.enable_w;
+  c.backward_motion.command_w = m.backward_motion.command_w;
+  c.backward_motion.enable_w = m.backward_motion.enable_w;
   return c;
 }
 

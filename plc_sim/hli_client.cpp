@@ -11,6 +11,7 @@ const std::vector<std::pair<std::string, ControlUnitBool HliControl::*>> bool_un
     {"feedhold", &HliControl::feedhold},
     {"delete_distance_to_go", &HliControl::delete_distance_to_go},
     {"m_function_ack", &HliControl::m_function_ack},
+    {"backward_motion", &HliControl::backward_motion},
 };
 const std::vector<std::pair<std::string, ControlUnitValue HliControl::*>> value_units = {
     {"override", &HliControl::override},

@@ -44,7 +44,7 @@ void Channel::drive_error(const std::string& axis, const std::string& what) {
 
 void Channel::update_velocity_factor() {
   const bool stop = hli_.feedhold.state_r || ddtg_requested_ || hli_.channel_state == ChannelState::error ||
-                    !synchronous_.empty();
+                    !synchronous_.empty() || hli_.backward_motion.request_r;
   look_ahead_.set_velocity_factor(stop ? 0.0 : hli_.override.state_r / static_cast<double>(override_full));
   replan_ = true;
 }
@@ -116,8 +116,26 @@ void Channel::apply_velocity_control(const HliControl& control) {
   }
   previous_override_command_ = value;
   value = std::clamp(value, 0, highest);
+  // DDTG-10: backward motion on the path is not built; a request holds the
+  // path, with a warning, until it is withdrawn (on a short cut: 50729).
+  const bool backward = control.backward_motion.command_w && control.backward_motion.enable_w;
+  if (backward && !hli_.backward_motion.request_r) {
+    Event held;
+    held.severity = Severity::warning;
+    held.nc_line = hli_.block_count_r;
+    held.block_nr = hli_.block_nr_r;
+    if (hli_.delete_distance_to_go_active_r) {
+      held.id = 50729;
+      held.message = "backward motion is not possible on a delete distance to go short cut; held until withdrawn";
+    } else {
+      held.message = "backward motion on the path is not available in this CNC; held until withdrawn";
+    }
+    raise(held);
+  }
+  const bool backward_changed = backward != hli_.backward_motion.request_r;
+  hli_.backward_motion.request_r = backward;
   const bool hold = hli_.feedhold.request_r;
-  if (hold == hli_.feedhold.state_r && value == hli_.override.state_r) return;
+  if (hold == hli_.feedhold.state_r && value == hli_.override.state_r && !backward_changed) return;
   hli_.feedhold.state_r = hold;
   hli_.override.state_r = value;
   update_velocity_factor();

@@ -347,3 +347,37 @@ TEST_CASE("DDTG-11 delete distance to go needs P-STUP-00033 > 0", "[ddtg]") {
   CHECK(channel.setpoints()[0].position == Approx(80).margin(1e-9));  // the contour ran as programmed
   CHECK(channel.setpoints()[1].position == Approx(60).margin(1e-9));
 }
+
+TEST_CASE("DDTG-10 a backward request on a short cut holds it with warning 50729 until withdrawn", "[ddtg]") {
+  // Backward motion on the path is not built: every request holds the path;
+  // on a short cut with the warning the text names.
+  const MachineConfig m = test::xyz_machine();
+  Channel channel(m, "N10 G1 X80 F3000\nN20 Y60\nN30 X0\nM30\n");
+  logger::LimitChecker checker(m);
+  int64_t cut = -1, held_from = -1;
+  double held_x = 0, held_y = 0;
+  bool w50729 = false, moved_while_held = false;
+  run_program(channel, &checker, [&](int64_t k, const HliState& s, HliControl& c) {
+    c.delete_distance_to_go = {k >= 500 && cut < 0, true};
+    if (s.delete_distance_to_go_active_r && cut < 0) cut = k;
+    const bool backward = cut >= 0 && k >= cut + 300 && k < cut + 1300;
+    c.backward_motion = {backward, true};
+    for (const Event& e : channel.take_events()) w50729 = w50729 || (e.id == 50729 && e.severity == Severity::warning);
+    if (cut >= 0 && k >= cut + 300 && s.path_velocity == 0 && held_from < 0) {
+      held_from = k;
+      held_x = channel.setpoints()[0].position;
+      held_y = channel.setpoints()[1].position;
+    }
+    if (held_from >= 0 && k < cut + 1301)
+      moved_while_held = moved_while_held || channel.setpoints()[0].position != held_x ||
+                         channel.setpoints()[1].position != held_y;
+    if (held_from >= 0 && k < cut + 1301) CHECK(s.delete_distance_to_go_active_r);  // still on the short cut
+    CHECK_FALSE(s.backward_motion.state_r);
+  });
+  CHECK(w50729);
+  REQUIRE(held_from > 0);
+  CHECK_FALSE(moved_while_held);
+  CHECK(channel.setpoints()[0].position == Approx(0).margin(1e-9));  // resumed after withdrawal, to the end
+  CHECK(channel.setpoints()[1].position == Approx(60).margin(1e-9));
+  for (const auto& v : checker.finish().violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
+}

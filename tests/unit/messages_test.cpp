@@ -46,6 +46,7 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   s.delete_distance_to_go_active_r = true;
   s.m_function_request_r = true;
   s.m_function_nr_r = 48;
+  s.backward_motion.request_r = true;
   const HliState t = lcm_support::from_message(through_the_wire(lcm_support::to_message(s, 42000)));
   CHECK(t.cycle == 42);
   CHECK(t.channel_state == ChannelState::error);
@@ -67,6 +68,7 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   CHECK(t.delete_distance_to_go_active_r);
   CHECK(t.m_function_request_r);
   CHECK(t.m_function_nr_r == 48);
+  CHECK(t.backward_motion.request_r);
 
   HliControl c;
   c.cycle = 7;
@@ -77,6 +79,7 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   c.delete_distance_to_go = {true, true};
   c.delete_distance_to_go_activation = {0x105, true};
   c.m_function_ack = {true, true};
+  c.backward_motion = {true, true};
   const HliControl d = lcm_support::from_message(through_the_wire(lcm_support::to_message(c, 7000)));
   CHECK(d.cycle == 7);
   CHECK(d.program_start.command_w);
@@ -86,6 +89,7 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   CHECK(d.delete_distance_to_go.command_w);
   CHECK(d.delete_distance_to_go_activation.command_w == 0x105);
   CHECK(d.m_function_ack.command_w);
+  CHECK(d.backward_motion.command_w);
   CHECK(d.override.enable_w);
 }
 
