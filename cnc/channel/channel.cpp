@@ -33,7 +33,7 @@ void Channel::drive_error(const std::string& axis, const std::string& what) {
   if (hli_.channel_state == ChannelState::error || hli_.channel_state == ChannelState::program_end) return;
   Event e;
   e.axis = axis;
-  e.nc_line = hli_.block_count_r;
+  e.nc_line = current_nc_line_;
   e.block_nr = hli_.block_nr_r;
   e.message = "channel stopped: drive error on axis " + axis + " (" + what + "); program aborted";
   raise(e);
@@ -122,7 +122,7 @@ void Channel::apply_velocity_control(const HliControl& control) {
   if (backward && !hli_.backward_motion.request_r) {
     Event held;
     held.severity = Severity::warning;
-    held.nc_line = hli_.block_count_r;
+    held.nc_line = current_nc_line_;
     held.block_nr = hli_.block_nr_r;
     if (hli_.delete_distance_to_go_active_r) {
       held.id = 50729;
@@ -161,7 +161,7 @@ void Channel::apply_delete_distance_to_go(const HliControl& control) {
       Event refused;
       refused.severity = Severity::warning;
       refused.parameter = "P-STUP-00033";
-      refused.nc_line = hli_.block_count_r;
+      refused.nc_line = current_nc_line_;
       refused.block_nr = hli_.block_nr_r;
       refused.message = "delete distance to go ignored: it needs P-STUP-00033 fb_storage_size > 0";
       raise(refused);
@@ -228,7 +228,7 @@ void Channel::start_short_cut(double t) {
     Event none;
     none.severity = Severity::warning;
     none.id = 50810;
-    none.nc_line = hli_.block_count_r;
+    none.nc_line = current_nc_line_;
     none.block_nr = hli_.block_nr_r;
     none.message = mask == 0 ? "delete distance to go: no further motion block; motion ends at the stop position"
                               : "delete distance to go: no #DEL DIST2GO end marker valid for activation " +
@@ -294,7 +294,8 @@ void Channel::begin_front(const MotionState& state, double t0) {
   run_blocks_without_motion(front.block_index);
   const Block& block = blocks_[front.block_index];
   hli_.block_nr_r = block.block_nr;
-  hli_.block_count_r = block.nc_line;
+  hli_.block_count_r = block.block_count;
+  current_nc_line_ = block.nc_line;
   queue_synchronous_actions(block);  // its M functions go out before its motion (MVS_SVS)
   plan(state, t0);
 }
@@ -324,7 +325,8 @@ void Channel::run_blocks_without_motion(size_t up_to) {
   for (; next_to_run_ < up_to; ++next_to_run_) {
     const Block& block = blocks_[next_to_run_];
     hli_.block_nr_r = block.block_nr;
-    hli_.block_count_r = block.nc_line;
+    hli_.block_count_r = block.block_count;
+    current_nc_line_ = block.nc_line;
     queue_synchronous_actions(block);
     if (!block.distance_prog_start) continue;
     switch (*block.distance_prog_start) {

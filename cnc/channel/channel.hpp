@@ -103,6 +103,7 @@ class Channel {
   // The channel starts once: ON and CLEAR, the defaults at program start (DPS-2).
   bool dps_counting_ = true;       // #DISTANCE PROG START ON
   double dps_before_front_ = 0;    // mm counted before the front block
+  int64_t current_nc_line_ = 0;    // NC line of the block in the interpolator, for events
   int64_t start_cycle_ = 0;
   int64_t cycle_ = 0;
   bool previous_start_command_ = false;

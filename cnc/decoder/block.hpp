@@ -25,6 +25,9 @@ enum class DistanceProgStart { on, off, clear };
 
 struct Block {
   int64_t nc_line = 0;   // 1-based line of the NC program
+  // Lines the decoder has read up to this one, repeated lines ($FOR)
+  // included: the HLI's block_count_r.
+  int64_t block_count = 0;
   int64_t block_nr = 0;  // N number, 0 if the line has none
   bool has_motion = false;
   Motion motion;

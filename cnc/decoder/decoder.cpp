@@ -1,13 +1,12 @@
 #include "decoder.hpp"
 
-#include <stdexcept>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 
 #include "parameter_expression.hpp"
 
@@ -111,14 +110,18 @@ class LineDecoder {
   LineDecoder(const MachineConfig& machine, std::vector<double> position)
       : machine_(machine), position_(std::move(position)) {}
 
+  const ParameterValues& parameters() const { return parameters_; }
+  void set_parameter(int n, double value) { parameters_[n] = value; }
+
   // Returns false once M30 ended the program.
-  bool decode(const std::string& raw, int64_t line_nr, std::vector<Block>& out) {
+  bool decode(const std::string& raw, int64_t line_nr, int64_t lines_read, std::vector<Block>& out) {
     std::string code = strip_comments(raw);
     const size_t first = code.find_first_not_of(" \t\r");
     if (first == std::string::npos) return true;
     if (code[first] == '%') return true;  // program name
     Block block;
     block.nc_line = line_nr;
+    block.block_count = lines_read;
     const size_t hash = code.find('#');
     if (hash != std::string::npos) {
       // A '#' command is the whole block, after an optional N number.
@@ -324,27 +327,91 @@ class LineDecoder {
 
 }  // namespace
 
+namespace {
+
+Event line_error(const std::string& message, const std::string& line, int64_t line_nr) {
+  Event error;
+  error.severity = Severity::error;
+  error.nc_line = line_nr;
+  // The N number if the line starts with one, for the message.
+  const size_t n = line.find_first_not_of(" \t");
+  if (n != std::string::npos && (line[n] == 'N' || line[n] == 'n')) error.block_nr = std::atoll(line.c_str() + n + 1);
+  error.message = message + " in '" + line + "'";
+  return error;
+}
+
+// $FOR P<n> = <start>, <end> [, <step>] ... $ENDFOR: the lines between run
+// while P<n> has not passed <end> (KRN-1).
+struct Loop {
+  size_t first_line;  // the line after $FOR
+  int parameter;
+  double end;
+  double step;
+  bool done(double value) const { return step > 0 ? value > end + 1e-9 : value < end - 1e-9; }
+};
+
+const std::regex for_line(R"(\s*(?:[Nn]\d+\s+)?\$FOR\s+[Pp](\d+)\s*=\s*([^,]+),([^,]+)(?:,([^,]+))?\s*)",
+                          std::regex::icase);
+const std::regex endfor_line(R"(\s*(?:[Nn]\d+\s+)?\$ENDFOR\s*)", std::regex::icase);
+
+// The line after the $ENDFOR that closes the $FOR at `line`, or none.
+std::optional<size_t> after_endfor(const std::vector<std::string>& lines, size_t line) {
+  int depth = 0;
+  for (size_t i = line; i < lines.size(); ++i) {
+    const std::string code = strip_comments(lines[i]);
+    if (std::regex_match(code, for_line)) ++depth;
+    if (std::regex_match(code, endfor_line) && --depth == 0) return i + 1;
+  }
+  return std::nullopt;
+}
+
+constexpr int64_t max_lines_read = 10000000;  // an endless loop is an error, not a hang
+
+}  // namespace
+
 DecodedProgram decode_program(const std::string& text, const MachineConfig& machine,
                               const std::vector<double>& start) {
   DecodedProgram program;
   LineDecoder decoder(machine, start);
+  std::vector<std::string> lines;
   std::istringstream in(text);
-  std::string line;
-  int64_t line_nr = 0;
-  while (std::getline(in, line)) {
-    ++line_nr;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  std::vector<Loop> loops;
+  int64_t lines_read = 0;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
     try {
-      if (!decoder.decode(line, line_nr, program.blocks)) break;
+      if (++lines_read > max_lines_read)
+        throw LineError{"more than " + std::to_string(max_lines_read) + " lines read: endless $FOR loop?"};
+      const std::string code = strip_comments(line);
+      std::smatch m;
+      if (std::regex_match(code, m, for_line)) {
+        auto value = [&](const std::ssub_match& part) { return evaluate_expression(part.str(), decoder.parameters()); };
+        Loop loop{i + 1, std::atoi(m[1].str().c_str()), value(m[3]), m[4].matched ? value(m[4]) : 1.0};
+        if (loop.step == 0) throw LineError{"$FOR step must not be 0"};
+        const std::optional<size_t> next = after_endfor(lines, i);
+        if (!next) throw LineError{"$FOR without $ENDFOR"};
+        const double first = value(m[2]);
+        decoder.set_parameter(loop.parameter, first);
+        if (loop.done(first)) i = *next - 1;
+        else loops.push_back(loop);
+        continue;
+      }
+      if (std::regex_match(code, endfor_line)) {
+        if (loops.empty()) throw LineError{"$ENDFOR without $FOR"};
+        const Loop& loop = loops.back();
+        const double value = decoder.parameters().at(loop.parameter) + loop.step;
+        decoder.set_parameter(loop.parameter, value);
+        if (loop.done(value)) loops.pop_back();
+        else i = loop.first_line - 1;
+        continue;
+      }
+      if (!decoder.decode(line, static_cast<int64_t>(i) + 1, lines_read, program.blocks)) break;
     } catch (const LineError& e) {
-      Event error;
-      error.severity = Severity::error;
-      error.nc_line = line_nr;
-      // The N number if the line starts with one, for the message.
-      const size_t n = line.find_first_not_of(" \t");
-      if (n != std::string::npos && (line[n] == 'N' || line[n] == 'n'))
-        error.block_nr = std::atoll(line.c_str() + n + 1);
-      error.message = e.message + " in '" + line + "'";
-      program.error = error;
+      program.error = line_error(e.message, line, static_cast<int64_t>(i) + 1);
+      break;
+    } catch (const std::invalid_argument& e) {
+      program.error = line_error(e.what(), line, static_cast<int64_t>(i) + 1);
       break;
     }
   }

@@ -76,7 +76,9 @@ TEST_CASE("KRN-2 decoder: an error names its line and block; the blocks before i
       {"N30 G01 G02 X1", "two motion G codes"},
       {"N30 G02 X30 Y0 I5 J0", "does not lie on the circle"},
       {"N30 #FLUSH", "'#FLUSH' is not supported yet"},
-      {"N30 $FOR P1=0,1,1", "'$FOR' is not supported yet"},
+      {"N30 $FOR P1=0,1,1", "$FOR without $ENDFOR"},
+      {"N30 $IF P1 == 1", "'$IF' is not supported yet"},
+      {"N30 $ENDFOR", "$ENDFOR without $FOR"},
       {"N30 X1 (open comment", "comment '(' is not closed"},
       {"N30 G01 X5 I3", "only allowed with G02/G03"},
       {"N30 F0", "must be > 0"},
@@ -190,4 +192,33 @@ TEST_CASE("KRN-1 DDTG-7 decoder: M functions, P parameters with arithmetic, #TIM
   CHECK(p.blocks[3].m_functions == std::vector<int>{7, 8});
   CHECK(p.blocks[4].dwell_s == Approx(1.5));  // -P2 = -((1 + 2) * -1.5 / 3)
   CHECK(p.blocks[6].program_end);
+}
+
+TEST_CASE("KRN-1 decoder: $FOR/$ENDFOR loops repeat their lines; block_count_r counts every line read",
+          "[decoder]") {
+  const DecodedProgram p = decode(
+      "N010 G01 X0 Y0 F1000\n"
+      "N020 $FOR P1 = 1, 3, 1\n"
+      "N030 G91 X10\n"
+      "N040 $FOR P2 = 2, 1, 1 (never: 2 > 1)\n"
+      "N050 Y99\n"
+      "N060 $ENDFOR\n"
+      "N070 $ENDFOR\n"
+      "N080 G90 X0 Y5\n"
+      "N090 M30\n");
+  INFO((p.error ? p.error->message : std::string()));
+  REQUIRE_FALSE(p.error);
+  REQUIRE(p.blocks.size() == 5);  // N030 three times (P1 = 1, 2, 3), N080, M30
+  for (int i = 0; i < 3; ++i) {
+    CHECK(p.blocks[i].block_nr == 30);
+    CHECK(p.blocks[i].nc_line == 3);
+    CHECK(p.blocks[i].motion.end[0] == 10.0 * (i + 1));
+  }
+  // Lines read: 1 2 3 4 7 | 3 4 7 | 3 4 7 8 9 (5, 6 never): N030 is the 3rd, 6th, 9th
+  CHECK(p.blocks[0].block_count == 3);
+  CHECK(p.blocks[1].block_count == 6);
+  CHECK(p.blocks[2].block_count == 9);
+  CHECK(p.blocks[3].nc_line == 8);
+  CHECK(p.blocks[3].block_count == 12);
+  CHECK(p.blocks[4].program_end);
 }
