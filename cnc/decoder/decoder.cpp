@@ -93,6 +93,8 @@ struct ModalState {
   bool absolute = true;   // G90
   double feed = 0;        // mm/s
   SlopeType slope = SlopeType::trapez;
+  bool centre_absolute = false;    // G161; G162 (relative to the start) is the initial state
+  bool centre_correction = false;  // G165: move the centre onto the circle through start and end; G164 off
 };
 
 std::string upper_words(const std::string& text) {
@@ -165,6 +167,10 @@ class LineDecoder {
             modal_.absolute = false;
           } else if (g == 92) {
             set_offset = true;
+          } else if (g == 161 || g == 162) {
+            modal_.centre_absolute = g == 161;
+          } else if (g == 164 || g == 165) {
+            modal_.centre_correction = g == 165;
           } else {
             throw LineError{"G code '" + w.text + "' is not supported yet"};
           }
@@ -305,15 +311,30 @@ class LineDecoder {
     const int x = machine_.axis_index("X"), y = machine_.axis_index("Y");
     if (x < 0 || y < 0) throw LineError{"G02/G03 need axes X and Y (plane G17)"};
     if (!i && !j) throw LineError{"G02/G03 need the centre I/J (R is not supported yet)"};
-    m.center_x = m.start[x] + i.value_or(0);
-    m.center_y = m.start[y] + j.value_or(0);
+    if (modal_.centre_absolute) {  // G161: in program coordinates
+      m.center_x = i.value_or(m.start[x] - offset_[x]) + offset_[x];
+      m.center_y = j.value_or(m.start[y] - offset_[y]) + offset_[y];
+    } else {
+      m.center_x = m.start[x] + i.value_or(0);
+      m.center_y = m.start[y] + j.value_or(0);
+    }
+    const double chord_x = m.end[x] - m.start[x], chord_y = m.end[y] - m.start[y];
+    const double chord = std::hypot(chord_x, chord_y);
+    if (modal_.centre_correction && chord > 1e-9) {
+      // G165: the nearest centre on the perpendicular bisector of start and end.
+      const double mid_x = (m.start[x] + m.end[x]) / 2, mid_y = (m.start[y] + m.end[y]) / 2;
+      const double nx = -chord_y / chord, ny = chord_x / chord;
+      const double along = (m.center_x - mid_x) * nx + (m.center_y - mid_y) * ny;
+      m.center_x = mid_x + along * nx;
+      m.center_y = mid_y + along * ny;
+    }
     const double r_start = std::hypot(m.start[x] - m.center_x, m.start[y] - m.center_y);
     const double r_end = std::hypot(m.end[x] - m.center_x, m.end[y] - m.center_y);
     if (r_start < 1e-6) throw LineError{"arc radius is zero"};
     if (std::abs(r_start - r_end) > 1e-3 + 1e-6 * r_start) {
       std::ostringstream msg;
       msg << "arc end point does not lie on the circle (start radius " << r_start
-          << " mm, end radius " << r_end << " mm)";
+          << " mm, end radius " << r_end << " mm; G165 corrects the centre)";
       throw LineError{msg.str()};
     }
   }

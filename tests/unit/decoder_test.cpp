@@ -222,3 +222,21 @@ TEST_CASE("KRN-1 decoder: $FOR/$ENDFOR loops repeat their lines; block_count_r c
   CHECK(p.blocks[3].block_count == 12);
   CHECK(p.blocks[4].program_end);
 }
+
+TEST_CASE("KRN-1 decoder: G161/G162 circle centre absolute/relative, G165 centre correction", "[decoder]") {
+  const DecodedProgram p = decode(
+      "N10 G01 X100 Y60 F1000\n"
+      "N20 G02 X150 Y10 J-50\n"         // G162 (initial): centre relative to the start
+      "N30 G161 G03 X100 Y60 I100 J10\n"  // G161: the same centre, absolute
+      "N40 G162 G165 G02 X150 Y10 I1 J-50\n"  // 1 mm off: G165 moves the centre onto the bisector
+      "N50 G164 G03 X100 Y60 I-49 J0\n");     // G164: 1 mm off is an error again
+  REQUIRE(p.error);
+  CHECK(p.error->block_nr == 50);
+  CHECK_THAT(p.error->message, Catch::Contains("does not lie on the circle"));
+  REQUIRE(p.blocks.size() == 4);
+  for (int i = 1; i <= 3; ++i) {
+    INFO("block " << p.blocks[i].block_nr);
+    CHECK(p.blocks[i].motion.center_x == Approx(100 + (i == 3 ? 0.5 : 0)).margin(1e-9));
+    CHECK(p.blocks[i].motion.center_y == Approx(10 + (i == 3 ? 0.5 : 0)).margin(1e-9));
+  }
+}
