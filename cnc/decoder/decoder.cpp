@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "parameter_expression.hpp"
 
@@ -376,10 +377,11 @@ const std::regex for_line(R"(\s*(?:[Nn]\d+\s+)?\$FOR\s+[Pp](\d+)\s*=\s*([^,]+),(
 const std::regex endfor_line(R"(\s*(?:[Nn]\d+\s+)?\$ENDFOR\s*)", std::regex::icase);
 
 // The line after the $ENDFOR that closes the $FOR at `line`, or none.
-std::optional<size_t> after_endfor(const std::vector<std::string>& lines, size_t line) {
+std::optional<size_t> after_endfor(const std::vector<std::string_view>& lines, size_t line) {
   int depth = 0;
   for (size_t i = line; i < lines.size(); ++i) {
-    const std::string code = strip_comments(lines[i]);
+    if (lines[i].find('$') == std::string_view::npos) continue;
+    const std::string code = strip_comments(std::string(lines[i]));
     if (std::regex_match(code, for_line)) ++depth;
     if (std::regex_match(code, endfor_line) && --depth == 0) return i + 1;
   }
@@ -394,19 +396,25 @@ DecodedProgram decode_program(const std::string& text, const MachineConfig& mach
                               const std::vector<double>& start) {
   DecodedProgram program;
   LineDecoder decoder(machine, start);
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  // Views into `text`: $FOR loops read lines again.
+  std::vector<std::string_view> lines;
+  for (size_t begin = 0; begin < text.size();) {
+    const size_t end = std::min(text.find('\n', begin), text.size());
+    lines.emplace_back(text.data() + begin, end - begin);
+    begin = end + 1;
+  }
   std::vector<Loop> loops;
   int64_t lines_read = 0;
   for (size_t i = 0; i < lines.size(); ++i) {
-    const std::string& line = lines[i];
+    const std::string line(lines[i]);
     try {
       if (++lines_read > max_lines_read)
         throw LineError{"more than " + std::to_string(max_lines_read) + " lines read: endless $FOR loop?"};
-      const std::string code = strip_comments(line);
+      // Plain blocks (no '$') spare the loop regexes.
+      const bool control_flow = line.find('$') != std::string::npos;
+      const std::string code = control_flow ? strip_comments(line) : std::string();
       std::smatch m;
-      if (std::regex_match(code, m, for_line)) {
+      if (control_flow && std::regex_match(code, m, for_line)) {
         auto value = [&](const std::ssub_match& part) { return evaluate_expression(part.str(), decoder.parameters()); };
         Loop loop{i + 1, std::atoi(m[1].str().c_str()), value(m[3]), m[4].matched ? value(m[4]) : 1.0};
         if (loop.step == 0) throw LineError{"$FOR step must not be 0"};
@@ -418,7 +426,7 @@ DecodedProgram decode_program(const std::string& text, const MachineConfig& mach
         else loops.push_back(loop);
         continue;
       }
-      if (std::regex_match(code, endfor_line)) {
+      if (control_flow && std::regex_match(code, endfor_line)) {
         if (loops.empty()) throw LineError{"$ENDFOR without $FOR"};
         const Loop& loop = loops.back();
         const double value = decoder.parameters().at(loop.parameter) + loop.step;
