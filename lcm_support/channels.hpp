@@ -13,4 +13,15 @@ inline const std::string participant = "HIL_PARTICIPANT";
 inline std::string axis_command(const std::string& axis) { return "AXIS_" + axis + "_CMD"; }
 inline std::string axis_state(const std::string& axis) { return "AXIS_" + axis + "_STATE"; }
 
+// The axis of a channel named "AXIS_<axis><suffix>"; "" for any other.
+inline std::string axis_of(const std::string& channel, const std::string& suffix) {
+  const std::string prefix = "AXIS_";
+  if (channel.size() <= prefix.size() + suffix.size() || channel.rfind(prefix, 0) != 0 ||
+      channel.compare(channel.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return "";
+  return channel.substr(prefix.size(), channel.size() - prefix.size() - suffix.size());
+}
+inline std::string axis_of_command(const std::string& channel) { return axis_of(channel, "_CMD"); }
+inline std::string axis_of_state(const std::string& channel) { return axis_of(channel, "_STATE"); }
+
 }  // namespace hil::channels

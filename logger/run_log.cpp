@@ -24,11 +24,6 @@ bool decode(const lcm::LogEvent& e, T& msg) {
   return msg.decode(e.data, 0, e.datalen) == e.datalen;
 }
 
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 }  // namespace
 
 RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report) {
@@ -71,30 +66,29 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       hil::participant_t m;
       if (!decode(*e, m)) { ++log.undecodable; continue; }
       if (m.name == "cnc" && m.phase == hil::participant_t::PHASE_RUN_END) log.run_end_seen = true;
-    } else if (starts_with(e->channel, "AXIS_") && checker) {
-      const int axis = log.scenario->machine.axis_index(
-          e->channel.substr(5, e->channel.find('_', 5) - 5));
+    } else if (checker && !channels::axis_of_command(e->channel).empty()) {
+      const int axis = log.scenario->machine.axis_index(channels::axis_of_command(e->channel));
       if (axis < 0) continue;
-      if (ends_with(e->channel, "_CMD")) {
-        hil::axis_setpoint_t m;
-        if (!decode(*e, m)) { ++log.undecodable; continue; }
-        checker->add_setpoint(axis, m.cycle, m.position);
-        AxisTrace& t = log.axes[axis];
-        t.cmd_cycle.push_back(m.cycle);
-        t.cmd_position.push_back(m.position);
-        t.cmd_velocity.push_back(m.velocity);
-        t.cmd_acceleration.push_back(m.acceleration);
-      } else if (ends_with(e->channel, "_STATE")) {
-        hil::axis_state_t m;
-        if (!decode(*e, m)) { ++log.undecodable; continue; }
-        checker->add_actual(axis, m.cycle, m.position, m.velocity, m.acceleration, m.following_error);
-        AxisTrace& t = log.axes[axis];
-        t.act_cycle.push_back(m.cycle);
-        t.act_position.push_back(m.position);
-        t.act_velocity.push_back(m.velocity);
-        t.act_acceleration.push_back(m.acceleration);
-        t.following_error.push_back(m.following_error);
-      }
+      hil::axis_setpoint_t m;
+      if (!decode(*e, m)) { ++log.undecodable; continue; }
+      checker->add_setpoint(axis, m.cycle, m.position);
+      AxisTrace& t = log.axes[axis];
+      t.cmd_cycle.push_back(m.cycle);
+      t.cmd_position.push_back(m.position);
+      t.cmd_velocity.push_back(m.velocity);
+      t.cmd_acceleration.push_back(m.acceleration);
+    } else if (checker && !channels::axis_of_state(e->channel).empty()) {
+      const int axis = log.scenario->machine.axis_index(channels::axis_of_state(e->channel));
+      if (axis < 0) continue;
+      hil::axis_state_t m;
+      if (!decode(*e, m)) { ++log.undecodable; continue; }
+      checker->add_actual(axis, m.cycle, m.position, m.velocity, m.acceleration, m.following_error);
+      AxisTrace& t = log.axes[axis];
+      t.act_cycle.push_back(m.cycle);
+      t.act_position.push_back(m.position);
+      t.act_velocity.push_back(m.velocity);
+      t.act_acceleration.push_back(m.acceleration);
+      t.following_error.push_back(m.following_error);
     }
   }
   if (log.messages_per_channel.empty() && std::filesystem::file_size(path) > 0)

@@ -19,6 +19,7 @@
 #include "node_options.hpp"
 #include "participant.hpp"
 #include "rerun.hpp"
+#include "run_end.hpp"
 #include "scenario.hpp"
 
 namespace {
@@ -75,9 +76,7 @@ class CncNode {
     if (!wait_for_participants()) return 3;
     publish_manifest();
     const double dt = machine_.cycle_time_s();
-    const int64_t settle_cycles = std::llround(scenario_.settle_time_s / dt);
-    const int64_t max_cycles = std::llround(scenario_.max_time_s / dt);
-    int64_t finished_at = -1;
+    cnc_node::RunEnd run_end(scenario_);
     int64_t k = 0;
     int status = 0;
     HliControl control;  // the PLC's answer to the previous cycle
@@ -92,16 +91,10 @@ class CncNode {
         break;
       }
       control = answers_.control;
-      for (size_t i = 0; i < machine_.axes.size(); ++i)
-        if (answers_.axis_errors[i])
-          channel_.drive_error(machine_.axes[i].name, lcm_support::monitor_names(answers_.axis_errors[i]));
-      if (channel_.finished() && finished_at < 0) finished_at = k;
-      if (finished_at >= 0 && k - finished_at >= settle_cycles) break;
-      if (k >= max_cycles) {
-        Event e;
-        e.message = "run exceeded run.max_time_s = " + std::to_string(scenario_.max_time_s) +
-                    " s of simulated time; stopped";
-        publish_event(e, k);
+      cnc_node::apply_drive_errors(channel_, machine_, answers_.axis_errors);
+      if (run_end.settled(channel_, k)) break;
+      if (run_end.timed_out(k)) {
+        publish_event(run_end.timeout_event(), k);
         break;
       }
     }

@@ -8,7 +8,6 @@
 #include <hil/run_manifest_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include <cmath>
 #include <deque>
 #include <map>
 #include <sstream>
@@ -18,6 +17,7 @@
 #include "channels.hpp"
 #include "cycle_messages.hpp"
 #include "messages.hpp"
+#include "run_end.hpp"
 #include "scenario.hpp"
 
 namespace hil::cnc_node {
@@ -49,16 +49,14 @@ Recording read_recording(const std::string& path) {
     } else if (ch == channels::hli_control) {
       hil::hli_control_t m;
       if (decode(e->data, n, m)) r.controls[m.cycle] = lcm_support::from_message(m);
-    } else if (r.scenario && ch.rfind("AXIS_", 0) == 0 && ch.size() > 6 &&
-               ch.compare(ch.size() - 6, 6, "_STATE") == 0) {
+    } else if (r.scenario && !channels::axis_of_state(ch).empty()) {
       hil::axis_state_t m;
-      const int axis = r.scenario->machine.axis_index(ch.substr(5, ch.size() - 11));
+      const int axis = r.scenario->machine.axis_index(channels::axis_of_state(ch));
       if (axis < 0 || !decode(e->data, n, m)) continue;
       auto& errors = r.drive_errors[m.cycle];
       errors.resize(r.scenario->machine.axes.size(), 0);
       errors[axis] = m.errors;
-    } else if (ch == channels::hli_state || (ch.rfind("AXIS_", 0) == 0 && ch.size() > 4 &&
-                                             ch.compare(ch.size() - 4, 4, "_CMD") == 0)) {
+    } else if (ch == channels::hli_state || !channels::axis_of_command(ch).empty()) {
       r.outputs[ch].emplace_back(static_cast<const char*>(e->data), n);
     } else if (ch == channels::event) {
       hil::event_t m;
@@ -99,10 +97,8 @@ int rerun(const std::string& log_path, std::ostream& out) {
   const Scenario& scenario = *rec.scenario;
   const MachineConfig& machine = scenario.machine;
   cnc::Channel channel(machine, scenario.nc_program);
-  const double dt = machine.cycle_time_s();
-  const int64_t settle_cycles = std::llround(scenario.settle_time_s / dt);
-  const int64_t max_cycles = std::llround(scenario.max_time_s / dt);
-  int64_t compared = 0, finished_at = -1, k = 0;
+  RunEnd run_end(scenario);
+  int64_t compared = 0, k = 0;
   HliControl control;
   // The same loop as the live node (cnc_main.cpp), with the recording in
   // place of the PLC and the drives.
@@ -129,15 +125,10 @@ int rerun(const std::string& log_path, std::ostream& out) {
     // The answers to cycle k, taken where the live node takes them.
     if (const auto c = rec.controls.find(k); c != rec.controls.end()) control = c->second;
     if (const auto e = rec.drive_errors.find(k); e != rec.drive_errors.end())
-      for (size_t i = 0; i < e->second.size(); ++i)
-        if (e->second[i]) channel.drive_error(machine.axes[i].name, lcm_support::monitor_names(e->second[i]));
-    if (channel.finished() && finished_at < 0) finished_at = k;
-    if (finished_at >= 0 && k - finished_at >= settle_cycles) break;
-    if (k >= max_cycles) {
-      Event e;
-      e.message = "run exceeded run.max_time_s = " + std::to_string(scenario.max_time_s) +
-                  " s of simulated time; stopped";
-      if (!matches(event_message(e, machine, k))) return 1;
+      apply_drive_errors(channel, machine, e->second);
+    if (run_end.settled(channel, k)) break;
+    if (run_end.timed_out(k)) {
+      if (!matches(event_message(run_end.timeout_event(), machine, k))) return 1;
       break;
     }
   }

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "channels.hpp"
 #include "messages.hpp"
 
 using namespace hil;
@@ -117,4 +118,12 @@ TEST_CASE("KRN-2 messages: an event keeps its ID, parameter, NC line, block and 
   CHECK(f.value == 3100.5);
   CHECK(f.limit == 3000);
   CHECK(f.message == e.message);
+}
+
+TEST_CASE("RIG-2 channels: the axis of an axis channel name, the inverse of axis_command / axis_state", "[messages]") {
+  CHECK(channels::axis_of_command(channels::axis_command("X")) == "X");
+  CHECK(channels::axis_of_state(channels::axis_state("Z")) == "Z");
+  CHECK(channels::axis_of_command(channels::axis_state("X")).empty());
+  CHECK(channels::axis_of_state("AXIS__STATE").empty());
+  CHECK(channels::axis_of_command("HLI_STATE").empty());
 }
