@@ -31,11 +31,9 @@ bool Channel::finished() const {
 
 void Channel::drive_error(const std::string& axis, const std::string& what) {
   if (hli_.channel_state == ChannelState::error || hli_.channel_state == ChannelState::program_end) return;
-  Event e;
+  Event e = event_at_block(Severity::error,
+                           "channel stopped: drive error on axis " + axis + " (" + what + "); program aborted");
   e.axis = axis;
-  e.nc_line = current_nc_line_;
-  e.block_nr = hli_.block_nr_r;
-  e.message = "channel stopped: drive error on axis " + axis + " (" + what + "); program aborted";
   raise(e);
   error_stop_ = hli_.channel_state == ChannelState::active;
   hli_.channel_state = ChannelState::error;
@@ -47,6 +45,15 @@ void Channel::update_velocity_factor() {
                     !synchronous_.empty() || hli_.backward_motion.request_r;
   look_ahead_.set_velocity_factor(stop ? 0.0 : hli_.override.state_r / static_cast<double>(override_full));
   replan_ = true;
+}
+
+Event Channel::event_at_block(Severity severity, std::string message) const {
+  Event e;
+  e.severity = severity;
+  e.nc_line = current_nc_line_;
+  e.block_nr = hli_.block_nr_r;
+  e.message = std::move(message);
+  return e;
 }
 
 void Channel::raise(Event event) {
@@ -120,16 +127,12 @@ void Channel::apply_velocity_control(const HliControl& control) {
   // path, with a warning, until it is withdrawn (on a short cut: 50729).
   const bool backward = control.backward_motion.command_w && control.backward_motion.enable_w;
   if (backward && !hli_.backward_motion.request_r) {
-    Event held;
-    held.severity = Severity::warning;
-    held.nc_line = current_nc_line_;
-    held.block_nr = hli_.block_nr_r;
-    if (hli_.delete_distance_to_go_active_r) {
-      held.id = 50729;
-      held.message = "backward motion is not possible on a delete distance to go short cut; held until withdrawn";
-    } else {
-      held.message = "backward motion on the path is not available in this CNC; held until withdrawn";
-    }
+    const bool on_short_cut = hli_.delete_distance_to_go_active_r;
+    Event held = event_at_block(
+        Severity::warning, on_short_cut
+                               ? "backward motion is not possible on a delete distance to go short cut; held until withdrawn"
+                               : "backward motion on the path is not available in this CNC; held until withdrawn");
+    if (on_short_cut) held.id = 50729;
     raise(held);
   }
   const bool backward_changed = backward != hli_.backward_motion.request_r;
@@ -158,12 +161,9 @@ void Channel::apply_delete_distance_to_go(const HliControl& control) {
       ddtg_requested_ = true;
       update_velocity_factor();
     } else {  // DDTG-11
-      Event refused;
-      refused.severity = Severity::warning;
+      Event refused = event_at_block(Severity::warning,
+                                     "delete distance to go ignored: it needs P-STUP-00033 fb_storage_size > 0");
       refused.parameter = "P-STUP-00033";
-      refused.nc_line = current_nc_line_;
-      refused.block_nr = hli_.block_nr_r;
-      refused.message = "delete distance to go ignored: it needs P-STUP-00033 fb_storage_size > 0";
       raise(refused);
     }
   }
@@ -176,7 +176,7 @@ void Channel::apply_delete_distance_to_go(const HliControl& control) {
 void Channel::queue_synchronous_actions(const Block& block) {
   for (int m : block.m_functions) synchronous_.push_back({m, 0});
   if (block.dwell_s > 0) synchronous_.push_back({-1, block.dwell_s});
-  if (!synchronous_.empty()) update_velocity_factor();
+  if (!block.m_functions.empty() || block.dwell_s > 0) update_velocity_factor();
 }
 
 void Channel::run_synchronous_actions(const HliControl& control, double t) {
@@ -225,14 +225,11 @@ void Channel::start_short_cut(double t) {
   hli_.delete_distance_to_go_active_r = false;
   update_velocity_factor();
   if (!found) {  // DDTG-6: no motion block left to short-cut to
-    Event none;
-    none.severity = Severity::warning;
+    Event none = event_at_block(
+        Severity::warning, mask == 0 ? "delete distance to go: no further motion block; motion ends at the stop position"
+                                     : "delete distance to go: no #DEL DIST2GO end marker valid for activation " +
+                                           std::to_string(mask) + " before program end; motion ends at the stop position");
     none.id = 50810;
-    none.nc_line = current_nc_line_;
-    none.block_nr = hli_.block_nr_r;
-    none.message = mask == 0 ? "delete distance to go: no further motion block; motion ends at the stop position"
-                              : "delete distance to go: no #DEL DIST2GO end marker valid for activation " +
-                                    std::to_string(mask) + " before program end; motion ends at the stop position";
     raise(none);
     next_to_look_ahead_ = blocks_.size();
     return;

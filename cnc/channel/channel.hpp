@@ -72,6 +72,8 @@ class Channel {
   void interpolate(double t);
   MotionState path_state_at(double t) const;
   void output(const MotionState& path);
+  // An event about the block in the interpolator (its NC line and N number).
+  Event event_at_block(Severity severity, std::string message) const;
   void raise(Event event);
 
   MachineConfig machine_;

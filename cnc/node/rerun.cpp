@@ -87,6 +87,9 @@ std::string describe_difference(const std::string& channel, const std::string& r
       o << "recorded position " << a.position << " velocity " << a.velocity << " acceleration " << a.acceleration
         << "; this build " << b.position << " " << b.velocity << " " << b.acceleration << " (mm, mm/s, mm/s^2)";
   }
+  if (o.str().empty())  // a message type this build no longer decodes
+    return "the recorded message does not decode as this build's " + channel +
+           " type (recorded by a build with another message layout)";
   return o.str();
 }
 
