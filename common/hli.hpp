@@ -3,6 +3,7 @@
 // library fills HliState, the PLC simulator writes HliControl; the nodes
 // translate both to and from the LCM types hli_state_t / hli_control_t.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,12 @@ struct HliState {
   int32_t m_function_nr_r = 0;
   ControlUnitState backward_motion;  // state_r stays FALSE: never moving backward
 };
+
+// The control units' request_r / state_r and the state flags by their
+// TF5200 names ("delete_distance_to_go.state_r", "m_function_request_r"),
+// for scenarios; TRUE / FALSE read as 1 / 0. None: no such field.
+std::optional<int64_t> read_state_field(const HliState& state, const std::string& name);
+std::vector<std::string> state_field_names();
 
 // HLI length unit: 0.1 um.
 constexpr double hli_units_per_mm = 10000.0;

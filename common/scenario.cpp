@@ -26,6 +26,20 @@ ChannelState channel_state_of(const YAML::Node& node, const std::string& where) 
   return state;
 }
 
+// The value a named HLI state field is compared with: true / false or a number.
+int64_t state_field_value(const std::string& key, const YAML::Node& node, const std::string& where) {
+  if (!read_state_field(HliState{}, key)) {
+    std::string known;
+    for (const std::string& name : state_field_names()) known += ", " + name;
+    throw ConfigError(where + ": unknown HLI field '" + key + "' (besides the named ones: " + known.substr(2) + ")");
+  }
+  bool flag = false;
+  if (YAML::convert<bool>::decode(node, flag)) return flag ? 1 : 0;
+  int64_t value = 0;
+  if (YAML::convert<int64_t>::decode(node, value)) return value;
+  throw ConfigError(where + ": '" + key + "' takes true, false or a whole number");
+}
+
 Condition parse_condition(const YAML::Node& node, const std::string& where) {
   Condition c;
   if (node.IsScalar() && node.as<std::string>() == "program_end") {
@@ -43,7 +57,7 @@ Condition parse_condition(const YAML::Node& node, const std::string& where) {
     else if (key == "channel_state") c.channel_state = channel_state_of(item.second, where);
     else if (key == "delete_distance_to_go_active_r") c.delete_distance_to_go_active_r = item.second.as<bool>();
     else if (key == "m_function_nr_r") c.m_function_nr_r = item.second.as<int32_t>();
-    else throw ConfigError(where + ": unknown trigger '" + key + "'");
+    else c.fields[key] = state_field_value(key, item.second, where);
   }
   return c;
 }
@@ -86,7 +100,7 @@ Expectation parse_expectation(const YAML::Node& node, const std::string& where) 
       for (const auto& axis : item.second)
         e.axis_position_mm[axis.first.as<std::string>()] = axis.second.as<double>();
     } else {
-      throw ConfigError(where + ": unknown check '" + key + "'");
+      e.fields[key] = state_field_value(key, item.second, where);
     }
   }
   return e;
@@ -137,6 +151,8 @@ bool Condition::holds(const HliState& s, double cycle_time_s) const {
   if (delete_distance_to_go_active_r && s.delete_distance_to_go_active_r != *delete_distance_to_go_active_r)
     return false;
   if (m_function_nr_r && !(s.m_function_request_r && s.m_function_nr_r == *m_function_nr_r)) return false;
+  for (const auto& [name, value] : fields)
+    if (read_state_field(s, name) != value) return false;
   return true;
 }
 
@@ -152,6 +168,7 @@ std::string Condition::describe() const {
   if (delete_distance_to_go_active_r)
     out << sep << "delete_distance_to_go_active_r=" << (*delete_distance_to_go_active_r ? "true" : "false"), sep = " ";
   if (m_function_nr_r) out << sep << "m_function_nr_r=" << *m_function_nr_r, sep = " ";
+  for (const auto& [name, value] : fields) out << sep << name << "=" << value, sep = " ";
   return out.str();
 }
 

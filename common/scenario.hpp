@@ -26,6 +26,8 @@ struct Condition {
   std::optional<ChannelState> channel_state;  // == value
   std::optional<bool> delete_distance_to_go_active_r;  // == value
   std::optional<int32_t> m_function_nr_r;     // this M function waits for acknowledgement
+  // Other HLI state fields by name (read_state_field), == value.
+  std::map<std::string, int64_t> fields;
 
   bool holds(const HliState& state, double cycle_time_s) const;
   std::string describe() const;
@@ -52,6 +54,7 @@ struct Expectation {
   std::optional<double> dist_prog_start_mm;
   std::optional<bool> delete_distance_to_go_active_r;
   std::map<std::string, double> axis_position_mm;
+  std::map<std::string, int64_t> fields;  // other HLI state fields (read_state_field)
   double tolerance_mm = 0.001;
 };
 

@@ -82,6 +82,10 @@ ExpectationResult ScenarioEngine::evaluate(const Expectation& e, const HliState&
   if (e.delete_distance_to_go_active_r)
     check(s.delete_distance_to_go_active_r == *e.delete_distance_to_go_active_r,
           std::string("delete_distance_to_go_active_r ") + (s.delete_distance_to_go_active_r ? "true" : "false"));
+  for (const auto& [name, expected] : e.fields) {
+    const int64_t value = read_state_field(s, name).value_or(0);
+    check(value == expected, name + " " + std::to_string(value) + " != " + std::to_string(expected));
+  }
   for (const auto& [axis, expected] : e.axis_position_mm) {
     for (size_t i = 0; i < s.axis_name.size(); ++i) {
       if (s.axis_name[i] != axis) continue;

@@ -219,12 +219,37 @@ void Channel::start_short_cut(double t) {
   // The rest of the front block is dropped; what lies between it and the
   // target (non-motion blocks) runs at the stop position, before the short cut.
   const uint32_t mask = static_cast<uint32_t>(hli_.delete_distance_to_go_activation.state_r);
-  const std::optional<size_t> found = short_cut_target(blocks_, front.block_index, mask);
+  const ShortCutTarget found = short_cut_target(blocks_, front.block_index, mask);
   next_to_run_ = front.block_index + 1;
   look_ahead_.clear();
   hli_.delete_distance_to_go_active_r = false;
   update_velocity_factor();
-  if (!found) {  // DDTG-6: no motion block left to short-cut to
+  if (found.not_skippable) {  // DDTG-8: the path stays where it stopped
+    const Block& command = blocks_[*found.not_skippable];
+    Event refused = event_at_block(Severity::error, "delete distance to go in line " +
+                                                        std::to_string(current_nc_line_) +
+                                                        " must not skip the command in line " +
+                                                        std::to_string(command.nc_line) + "; program aborted");
+    refused.id = 51016;
+    refused.nc_line = command.nc_line;
+    refused.block_nr = command.block_nr;
+    raise(refused);
+    hli_.channel_state = ChannelState::error;
+    next_to_look_ahead_ = next_to_run_ = blocks_.size();
+    return;
+  }
+  if (found.channel_initialisation) {  // DDTG-8: the short cut ends before it
+    const Block& command = blocks_[*found.channel_initialisation];
+    Event ended = event_at_block(Severity::warning, "delete distance to go in line " +
+                                                        std::to_string(current_nc_line_) + ": the command in line " +
+                                                        std::to_string(command.nc_line) +
+                                                        " needs channel initialisation; the short cut ends before it");
+    ended.id = 51036;
+    ended.nc_line = command.nc_line;
+    ended.block_nr = command.block_nr;
+    raise(ended);
+  }
+  if (!found.target) {  // DDTG-6: no motion block left to short-cut to
     Event none = event_at_block(
         Severity::warning, mask == 0 ? "delete distance to go: no further motion block; motion ends at the stop position"
                                      : "delete distance to go: no #DEL DIST2GO end marker valid for activation " +
@@ -234,7 +259,7 @@ void Channel::start_short_cut(double t) {
     next_to_look_ahead_ = blocks_.size();
     return;
   }
-  const size_t target = *found;
+  const size_t target = *found.target;
   Motion cut;
   cut.type = rapid ? MotionType::rapid : MotionType::linear;  // DDTG-2: linear, G00 if the interrupted block was
   cut.start = stop;
@@ -275,12 +300,12 @@ void Channel::refill_look_ahead() {
   for (; !look_ahead_.full() && next_to_look_ahead_ < blocks_.size(); ++next_to_look_ahead_) {
     const Block& block = blocks_[next_to_look_ahead_];
     if (!block.has_motion) continue;
-    // M functions or a dwell on its line or since the last motion block: the
-    // path stands still where it starts.
+    // M functions, a dwell or a channel initialisation on its line or since
+    // the last motion block: the path stands still where it starts.
     bool stop_before = false;
     for (size_t i = next_to_look_ahead_ + 1; i-- > 0;) {
       if (i < next_to_look_ahead_ && blocks_[i].has_motion) break;
-      stop_before = stop_before || !blocks_[i].m_functions.empty() || blocks_[i].dwell_s > 0;
+      stop_before = stop_before || blocks_[i].stops_path();
     }
     look_ahead_.push(next_to_look_ahead_, PathSegment(block.motion, machine_), block.slope, stop_before);
   }

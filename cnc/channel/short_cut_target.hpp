@@ -1,5 +1,5 @@
 #pragma once
-// Where a delete distance to go short-cuts to (DDTG-1, DDTG-5).
+// Where a delete distance to go short-cuts to (DDTG-1, DDTG-5, DDTG-6, DDTG-8).
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -8,11 +8,22 @@
 
 namespace hil::cnc {
 
-// The motion block whose end point the short cut from `interrupted` goes
-// to: the next motion block (activation 0), or the last motion block before
-// the first #DEL DIST2GO marker with END & activation != 0 (which may be
-// `interrupted` itself). None: no motion block, or no valid marker, left
-// before the program end (DDTG-6).
-std::optional<size_t> short_cut_target(const std::vector<Block>& blocks, size_t interrupted, uint32_t activation);
+struct ShortCutTarget {
+  // The motion block whose end point the short cut goes to. None: no motion
+  // block, or no valid marker, left before the program end (DDTG-6: 50810),
+  // or `not_skippable` is set.
+  std::optional<size_t> target;
+  // DDTG-8: a command between the interrupted block and the target that
+  // must not be skipped (error 51016); there is no short cut.
+  std::optional<size_t> not_skippable;
+  // DDTG-8: a command needing channel initialisation ended the search (warning
+  // 51036); the short cut goes to the last motion block before it.
+  std::optional<size_t> channel_initialisation;
+};
+
+// From a stop in block `interrupted`: the next motion block (activation 0),
+// or the last motion block before the first #DEL DIST2GO marker with
+// END & activation != 0 (which may be `interrupted` itself).
+ShortCutTarget short_cut_target(const std::vector<Block>& blocks, size_t interrupted, uint32_t activation);
 
 }  // namespace hil::cnc

@@ -23,6 +23,12 @@ struct Motion {
 // #DISTANCE PROG START ON / OFF (modal) / CLEAR (DPS-2).
 enum class DistanceProgStart { on, off, clear };
 
+// What a delete distance to go short cut may not pass (DDTG-8): commands
+// that must not be skipped (#CS ON/OFF: error 51016), and commands that need
+// channel initialisation (#CHANNEL INIT: the short cut ends before them,
+// warning 51036).
+enum class ShortCutRestriction { none, not_skippable, channel_initialisation };
+
 struct Block {
   int64_t nc_line = 0;   // 1-based line of the NC program
   // Lines the decoder has read up to this one, repeated lines ($FOR)
@@ -41,10 +47,18 @@ struct Block {
   // acknowledged by it before the motion starts (MVS_SVS), in order.
   std::vector<int> m_functions;
   double dwell_s = 0;  // #TIME: the path waits this long, s
+  ShortCutRestriction short_cut_restriction = ShortCutRestriction::none;
 
+  // The path stands still where this block is reached: for the PLC's
+  // acknowledgement, a dwell, or a channel initialisation.
+  bool stops_path() const {
+    return !m_functions.empty() || dwell_s > 0 ||
+           short_cut_restriction == ShortCutRestriction::channel_initialisation;
+  }
   // Anything for the interpolator to do besides moving.
   bool has_command() const {
-    return distance_prog_start || ddtg_end_marker || !m_functions.empty() || dwell_s > 0 || program_end;
+    return distance_prog_start || ddtg_end_marker || stops_path() || program_end ||
+           short_cut_restriction != ShortCutRestriction::none;
   }
 };
 

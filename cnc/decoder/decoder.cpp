@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "coordinate_system.hpp"
 #include "parameter_expression.hpp"
 
 namespace hil::cnc {
@@ -197,19 +198,15 @@ class LineDecoder {
     }
     if (set_offset) {
       if (seen_motion_word || i_word || j_word) throw LineError{"G92 must not be combined with motion"};
+      if (cs_) throw LineError{"G92 while a #CS is active is not supported yet"};
       for (size_t a = 0; a < axis_words.size(); ++a)
         if (axis_words[a]) offset_[a] = position_[a] - *axis_words[a];
       return true;
     }
     if (motion) modal_.motion = *motion;
 
-    bool moves = false;
-    std::vector<double> target = position_;
-    for (size_t a = 0; a < axis_words.size(); ++a) {
-      if (!axis_words[a]) continue;
-      target[a] = modal_.absolute ? *axis_words[a] + offset_[a] : position_[a] + *axis_words[a];
-      moves = moves || target[a] != position_[a];
-    }
+    const std::vector<double> target = programmed_target(axis_words);
+    bool moves = target != position_;
     const bool is_arc = modal_.motion == MotionType::arc_cw || modal_.motion == MotionType::arc_ccw;
     if ((i_word || j_word) && !is_arc) throw LineError{"I/J are only allowed with G02/G03"};
     if (is_arc && (i_word || j_word)) moves = true;  // full circle: end = start
@@ -243,7 +240,70 @@ class LineDecoder {
     else if (command.rfind("#SLOPE", 0) == 0) decode_slope(command);
     else if (command.rfind("#DEL DIST2GO", 0) == 0) block.ddtg_end_marker = decode_end_marker(command);
     else if (command.rfind("#TIME", 0) == 0) block.dwell_s = decode_dwell(command);
+    else if (command.rfind("#CS ", 0) == 0) decode_coordinate_system(command, block);
+    else if (command == "#CHANNEL INIT [CMDPOS]" || command == "#CHANNEL INIT[CMDPOS]") {
+      // The command positions the interpolator would report are the ones
+      // decoded: this rig has no manual mode offsets. The path stands still
+      // there (Block::stops_path).
+      block.short_cut_restriction = ShortCutRestriction::channel_initialisation;
+    } else if (command.rfind("#CHANNEL INIT", 0) == 0)
+      throw LineError{"#CHANNEL INIT takes [CMDPOS] (ACTPOS and single axes are not supported yet)"};
     else throw LineError{"command '" + command.substr(0, command.find_first_of(" [")) + "' is not supported yet"};
+  }
+
+  // #CS ON [v1,v2,v3,φ1,φ2,φ3], #CS ON [<id>] [..], #CS OFF; one CS at a time.
+  void decode_coordinate_system(const std::string& command, Block& block) {
+    block.short_cut_restriction = ShortCutRestriction::not_skippable;  // DDTG-8
+    if (command == "#CS OFF") {
+      if (!cs_) throw LineError{"#CS OFF without an active #CS"};
+      cs_.reset();
+      return;
+    }
+    if (command.rfind("#CS ON", 0) != 0) throw LineError{"#CS takes ON [v1,v2,v3,φ1,φ2,φ3] or OFF"};
+    std::vector<std::string> groups;
+    for (size_t open = command.find('['); open != std::string::npos; open = command.find('[', open + 1)) {
+      const size_t close = command.find(']', open);
+      if (close == std::string::npos) throw LineError{"#CS ON: '[' is not closed"};
+      groups.push_back(command.substr(open + 1, close - open - 1));
+    }
+    if (groups.empty() || groups.size() > 2)
+      throw LineError{"#CS ON needs [v1,v2,v3,φ1,φ2,φ3], optionally after [<CS-ID>] (stored CS are not supported yet)"};
+    if (cs_) throw LineError{"#CS ON while a #CS is active: deselect it with #CS OFF first (nesting is not supported yet)"};
+    for (const char* axis : {"X", "Y", "Z"})
+      if (machine_.axis_index(axis) < 0) throw LineError{"#CS needs the main axes X, Y and Z"};
+    cs_ = CoordinateSystem::parse(groups.back(), parameters_);
+  }
+
+  int main_axis(int k) const { return machine_.axis_index(std::string(1, "XYZ"[k])); }
+  // Main axes of a machine position in the active #CS, and back.
+  Eigen::Vector3d to_program(const std::vector<double>& machine) const {
+    Eigen::Vector3d workpiece;
+    for (int k = 0; k < 3; ++k) workpiece[k] = machine[main_axis(k)] - offset_[main_axis(k)];
+    return cs_->to_program(workpiece);
+  }
+  Eigen::Vector3d to_machine(const Eigen::Vector3d& program) const {
+    Eigen::Vector3d machine = cs_->to_workpiece(program);
+    for (int k = 0; k < 3; ++k) machine[k] += offset_[main_axis(k)];
+    return machine;
+  }
+
+  // The end point of a block with these axis words (G90/G91, G92, #CS).
+  std::vector<double> programmed_target(const std::vector<std::optional<double>>& words) const {
+    std::vector<double> target = position_;
+    auto programmed = [&](double current, double word) { return modal_.absolute ? word : current + word; };
+    for (size_t a = 0; a < words.size(); ++a)
+      if (words[a]) target[a] = programmed(position_[a], *words[a]) + (modal_.absolute ? offset_[a] : 0.0);
+    if (!cs_) return target;
+    // In a #CS one main axis word can move all three main axes.
+    Eigen::Vector3d point = to_program(position_);
+    for (int k = 0; k < 3; ++k)
+      if (words[main_axis(k)]) point[k] = programmed(point[k], *words[main_axis(k)]);
+    const Eigen::Vector3d machine = to_machine(point);
+    for (int k = 0; k < 3; ++k) {
+      const int a = main_axis(k);
+      target[a] = std::abs(machine[k] - position_[a]) > 1e-9 ? machine[k] : position_[a];
+    }
+    return target;
   }
 
   void decode_slope(const std::string& command) {
@@ -312,7 +372,16 @@ class LineDecoder {
     const int x = machine_.axis_index("X"), y = machine_.axis_index("Y");
     if (x < 0 || y < 0) throw LineError{"G02/G03 need axes X and Y (plane G17)"};
     if (!i && !j) throw LineError{"G02/G03 need the centre I/J (R is not supported yet)"};
-    if (modal_.centre_absolute) {  // G161: in program coordinates
+    if (cs_) {
+      if (!cs_->keeps_xy_plane()) throw LineError{"G02/G03 in a #CS rotated out of the XY plane are not supported yet"};
+      const Eigen::Vector3d start = to_program(m.start);
+      const Eigen::Vector3d centre =
+          modal_.centre_absolute ? Eigen::Vector3d(i.value_or(start.x()), j.value_or(start.y()), start.z())
+                                 : Eigen::Vector3d(start.x() + i.value_or(0), start.y() + j.value_or(0), start.z());
+      const Eigen::Vector3d machine = to_machine(centre);
+      m.center_x = machine.x();
+      m.center_y = machine.y();
+    } else if (modal_.centre_absolute) {  // G161: in program coordinates
       m.center_x = i.value_or(m.start[x] - offset_[x]) + offset_[x];
       m.center_y = j.value_or(m.start[y] - offset_[y]) + offset_[y];
     } else {
@@ -344,6 +413,7 @@ class LineDecoder {
   std::vector<double> position_;             // machine coordinates
   ParameterValues parameters_;               // P parameters
   std::vector<double> offset_ = std::vector<double>(position_.size(), 0.0);  // G92: machine - program
+  std::optional<CoordinateSystem> cs_;       // #CS ON
   ModalState modal_;
 };
 

@@ -1,8 +1,10 @@
 #pragma once
 // NC text -> blocks, for the dialect subset of KRN-1 implemented so far:
-// N, G00 G01 G02 G03 (I J centre, incremental to the start point), G90 G91,
-// G92 (position preset), F (mm/min), M30, #DISTANCE PROG START ON|OFF|CLEAR,
-// #SLOPE[TYPE=STEP|TRAPEZ|SIN2], `;` and `( )` comments, `%name`. A block
+// N, G00 G01 G02 G03 (I J centre, G161/G162, G164/G165), G90 G91, G92
+// (position preset), F (mm/min), M functions, M30, P<n> = expression,
+// $FOR/$ENDFOR, #DISTANCE PROG START ON|OFF|CLEAR, #SLOPE[TYPE=..], #TIME,
+// #DEL DIST2GO [END=..], #CS ON [..]/OFF, #CHANNEL INIT [CMDPOS],
+// `;` and `( )` comments, `%name`. A block
 // whose axes do not move is no motion block. Anything else is an
 // error with its line number; the blocks before it are still returned, so
 // the channel can run exactly what was decoded correctly.

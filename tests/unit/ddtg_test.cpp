@@ -321,7 +321,7 @@ TEST_CASE("DDTG-5 DDTG-6 short-cut targets: next motion block, or before the fir
       "N10 G1 X10 F1000\nN20 Y10\nN21 #DEL DIST2GO\nN22 M8\nN30 X20\nN31 #DEL DIST2GO [END=6]\nN40 Y20\nM30\n",
       test::xyz_machine(), {0, 0, 0});
   REQUIRE_FALSE(p.error);
-  auto nr = [&](std::optional<size_t> i) { return i ? p.blocks[*i].block_nr : -1; };
+  auto nr = [&](const ShortCutTarget& t) { return t.target ? p.blocks[*t.target].block_nr : -1; };
   CHECK(nr(short_cut_target(p.blocks, 0, 0)) == 20);   // DDTG-1: the next motion block
   CHECK(nr(short_cut_target(p.blocks, 0, 1)) == 20);   // N21 (END=1): the last motion block before it
   CHECK(nr(short_cut_target(p.blocks, 0, 4)) == 30);   // N31 (END=6 & 4)
@@ -380,4 +380,71 @@ TEST_CASE("DDTG-10 a backward request on a short cut holds it with warning 50729
   CHECK(channel.setpoints()[0].position == Approx(0).margin(1e-9));  // resumed after withdrawal, to the end
   CHECK(channel.setpoints()[1].position == Approx(60).margin(1e-9));
   for (const auto& v : checker.finish().violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
+}
+
+TEST_CASE("DDTG-8 short-cut targets: #CS must not be skipped, #CHANNEL INIT ends the search", "[ddtg]") {
+  const DecodedProgram p = decode_program(
+      "N10 G1 X10 F1000\nN20 Y10\nN21 #DEL DIST2GO\nN22 #CHANNEL INIT [CMDPOS]\nN30 X20\nN31 #CS ON [1,2,0]\n"
+      "N40 Y20\nN41 #DEL DIST2GO [END=2]\nN50 #CS OFF\nN60 X0\nM30\n",
+      test::xyz_machine(), {0, 0, 0});
+  REQUIRE_FALSE(p.error);
+  auto nr = [&](std::optional<size_t> i) { return i ? p.blocks[*i].block_nr : -1; };
+  const ShortCutTarget single = short_cut_target(p.blocks, 0, 0);
+  CHECK(nr(single.target) == 20);  // the next motion block, before any restriction
+  CHECK_FALSE(single.not_skippable);
+  const ShortCutTarget init = short_cut_target(p.blocks, 0, 2);  // searching for END=2 meets N22
+  CHECK(nr(init.channel_initialisation) == 22);
+  CHECK(nr(init.target) == 20);  // the last motion block before N22
+  const ShortCutTarget right_before = short_cut_target(p.blocks, 1, 2);  // interrupted in N20
+  CHECK(nr(right_before.target) == 20);
+  const ShortCutTarget cs = short_cut_target(p.blocks, 4, 2);  // interrupted in N30: N31 #CS lies before N41
+  CHECK(nr(cs.not_skippable) == 31);
+  CHECK_FALSE(cs.target);
+  CHECK(nr(short_cut_target(p.blocks, 4, 0).not_skippable) == 31);  // also before the next motion block
+  CHECK(nr(short_cut_target(p.blocks, 6, 2).target) == 40);          // after it: N41 is reached first
+}
+
+TEST_CASE("DDTG-8 skipping #CS is error 51016: the path stays at the stop position, the program is aborted",
+          "[ddtg]") {
+  std::vector<Event> events;
+  const auto samples = run_with_ddtg(
+      "N10 G1 X80 F3000\nN15 #CS ON [0,0,0,0,0,90]\nN20 X10 Y60\nN25 #CS OFF\nN30 X0\nM30\n", {500}, 300, &events);
+  CHECK(first_active(samples) == nullptr);
+  const Sample& end = samples.back();
+  CHECK(end.x > 20);
+  CHECK(end.x < 60);  // stopped in N10
+  CHECK(end.y == 0);
+  CHECK(end.v == 0);
+  const Event* refused = nullptr;
+  for (const Event& e : events)
+    if (e.id == 51016) refused = &e;
+  REQUIRE(refused != nullptr);
+  CHECK(refused->severity == Severity::error);
+  CHECK(refused->nc_line == 2);  // the #CS line
+  CHECK(refused->block_nr == 15);
+}
+
+TEST_CASE("DDTG-8 #CHANNEL INIT ends the search for the end marker: short cut to before it, warning 51036",
+          "[ddtg]") {
+  // TF5200_delete_distance_to_go.txt 2.5: the program goes on from there.
+  std::vector<Event> events;
+  const auto samples = run_with_ddtg(
+      "N10 G1 X80 F3000\nN20 Y60\nN25 #CHANNEL INIT [CMDPOS]\nN30 X0\nN31 #DEL DIST2GO\nN40 Y0\nM30\n", {500}, 300,
+      &events, 1);
+  const Sample* cut = first_active(samples);
+  REQUIRE(cut != nullptr);
+  CHECK(cut->block_nr == 20);
+  for (const Sample& s : samples)
+    if (s.active) CHECK(off_line(s.x, s.y, cut->x, cut->y, 80, 60) < 1e-9);  // to N20's end, not N30's
+  bool passed_n30 = false;
+  for (const Sample& s : samples) passed_n30 = passed_n30 || (s.block_nr == 30 && s.x < 40);
+  CHECK(passed_n30);  // N30 runs as programmed after the short cut
+  CHECK(samples.back().x == Approx(0).margin(1e-9));
+  CHECK(samples.back().y == Approx(0).margin(1e-9));
+  const Event* warned = nullptr;
+  for (const Event& e : events)
+    if (e.id == 51036) warned = &e;
+  REQUIRE(warned != nullptr);
+  CHECK(warned->severity == Severity::warning);
+  CHECK(warned->block_nr == 25);
 }

@@ -240,3 +240,60 @@ TEST_CASE("KRN-1 decoder: G161/G162 circle centre absolute/relative, G165 centre
     CHECK(p.blocks[i].motion.center_y == Approx(10 + (i == 3 ? 0.5 : 0)).margin(1e-9));
   }
 }
+
+TEST_CASE("KRN-1 DDTG-8 decoder: #CS ON [v1,v2,v3,φ1,φ2,φ3] offsets and rotates the program, #CS OFF", "[decoder]") {
+  const DecodedProgram p = decode(
+      "N10 G01 X10 Y0 F1000\n"
+      "N20 #CS ON [100,50,5,0,0,90]\n"  // rotated 90° about Z
+      "N30 X10 Y0 Z0\n"               // program (10, 0, 0) -> machine (100, 60, 5)
+      "N40 G91 Y10\n"                 // +Y in the CS is -X on the machine
+      "N50 G90 G03 X0 Y20 I-10 J0\n"  // quarter circle around program (0, 10)
+      "N60 #CS OFF\n"
+      "N70 G01 X0 Y0 Z0\n"
+      "N75 X5\n"                      // unprogrammed axes keep their program coordinates
+      "N80 #CS ON [,,-2]\n"           // translation only, gaps are 0
+      "N90 Z0\n"
+      "N95 #CS OFF\n"
+      "N100 #CHANNEL INIT [CMDPOS]\n");
+  if (p.error) FAIL(p.error->message);
+  REQUIRE(p.blocks.size() == 12);
+  CHECK(p.blocks[1].short_cut_restriction == ShortCutRestriction::not_skippable);
+  const Motion& n30 = p.blocks[2].motion;
+  CHECK(n30.end[0] == Approx(100).margin(1e-9));
+  CHECK(n30.end[1] == Approx(60).margin(1e-9));
+  CHECK(n30.end[2] == Approx(5).margin(1e-9));
+  const Motion& n40 = p.blocks[3].motion;
+  CHECK(n40.end[0] == Approx(90).margin(1e-9));
+  CHECK(n40.end[1] == Approx(60).margin(1e-9));
+  const Motion& n50 = p.blocks[4].motion;
+  CHECK(n50.center_x == Approx(90).margin(1e-9));
+  CHECK(n50.center_y == Approx(50).margin(1e-9));
+  CHECK(n50.end[0] == Approx(80).margin(1e-9));
+  CHECK(n50.end[1] == Approx(50).margin(1e-9));
+  CHECK(p.blocks[5].short_cut_restriction == ShortCutRestriction::not_skippable);
+  CHECK(p.blocks[6].motion.end == std::vector<double>{0, 0, 0});  // back in workpiece coordinates
+  CHECK(p.blocks[7].motion.end == std::vector<double>{5, 0, 0});
+  CHECK(p.blocks[9].motion.end[2] == Approx(-2).margin(1e-12));
+  CHECK(p.blocks[11].short_cut_restriction == ShortCutRestriction::channel_initialisation);
+  CHECK(p.blocks[11].stops_path());
+}
+
+TEST_CASE("KRN-2 decoder: #CS and #CHANNEL INIT forms that are not supported are errors with their line",
+          "[decoder]") {
+  struct Case {
+    const char* program;
+    const char* message;
+  };
+  for (const Case& c : {Case{"#CS OFF\n", "without an active #CS"},
+                        Case{"#CS ON [1,2]\n#CS ON [3]\n", "nesting is not supported"},
+                        Case{"#CS ON\n", "needs [v1,v2,v3"},
+                        Case{"#CS ON [1,2,3,4,5,6,7]\n", "at most 6 components"},
+                        Case{"#CS ON [0,0,0,30]\nG02 X1 Y1 I1 F100\n", "rotated out of the XY plane"},
+                        Case{"#CS ON [1]\nG92 X0\n", "G92 while a #CS is active"},
+                        Case{"#CHANNEL INIT [ACTPOS]\n", "#CHANNEL INIT takes [CMDPOS]"}}) {
+    INFO(c.program);
+    const DecodedProgram p = decode(c.program);
+    REQUIRE(p.error);
+    CHECK_THAT(p.error->message, Catch::Contains(c.message));
+  }
+}

@@ -58,9 +58,35 @@ TEST_CASE("RIG-5 scenario: unknown HLI fields and triggers are refused with thei
   const Scenario s = scenario("plc:\n  timeline:\n    - when: {cycle: 1}\n      set: {feed_hold.command_w: true}\n");
   CHECK_THROWS_WITH(plc::ScenarioEngine(s), Catch::Contains("plc.timeline[0]: unknown HLI field 'feed_hold.command_w'"));
   CHECK_THROWS_WITH(scenario("plc:\n  timeline:\n    - when: {velocity: 1}\n      set: {}\n"),
-                    Catch::Contains("unknown trigger 'velocity'"));
+                    Catch::Contains("unknown HLI field 'velocity'"));
   CHECK_THROWS_WITH(scenario("expect:\n  - when: program_end\n    axis_position_mm: {Q: 1}\n"),
                     Catch::Contains("axis 'Q' is not on the machine"));
+}
+
+TEST_CASE("RIG-5 scenario: control units' request_r / state_r as triggers and checks", "[scenario]") {
+  const Scenario s = scenario(R"(
+plc:
+  timeline:
+    - when: {delete_distance_to_go.state_r: true}
+      set: {feedhold.command_w: true}
+expect:
+  - when: {backward_motion.request_r: true}
+    delete_distance_to_go.state_r: false
+    m_function_request_r: true
+)");
+  plc::ScenarioEngine engine(s);
+  HliState st = state(1);
+  CHECK_FALSE(engine.cycle(st).feedhold.command_w);
+  st.delete_distance_to_go.state_r = true;
+  st.backward_motion.request_r = true;
+  CHECK(engine.cycle(st).feedhold.command_w);
+  const auto results = engine.finish();
+  REQUIRE(results.size() == 1);
+  CHECK_FALSE(results[0].passed);
+  CHECK_THAT(results[0].detail, Catch::Contains("delete_distance_to_go.state_r 1 != 0"));
+  CHECK_THAT(results[0].detail, Catch::Contains("m_function_request_r 0 != 1"));
+  CHECK_THROWS_WITH(scenario("expect:\n  - when: program_end\n    feedhold.state_r: maybe\n"),
+                    Catch::Contains("'feedhold.state_r' takes true, false or a whole number"));
 }
 
 TEST_CASE("RIG-5 scenario: expectations pass, fail with the reason, or were never reached", "[scenario]") {
