@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "config_error.hpp"
+#include "hli.hpp"
 
 namespace hil {
 namespace {
@@ -120,6 +121,15 @@ MachineConfig parse_machine_config(const YAML::Node& node) {
       throw ConfigError("machine: override_max_percent must be within 100 .. 200");
     if (node["fb_storage_size"]) config.fb_storage_size = node["fb_storage_size"].as<int64_t>();
     if (config.fb_storage_size < 0) throw ConfigError("machine: P-STUP-00033 fb_storage_size must be >= 0");
+    if (const YAML::Node pre_output = node["m_pre_outp"]) {
+      if (!pre_output.IsMap()) throw ConfigError("machine: m_pre_outp must map M numbers to 0.1 um");
+      for (const auto& item : pre_output) {
+      const int nr = item.first.as<int>();
+      const double value = item.second.as<double>();
+      if (nr < 0 || value < 0) throw ConfigError("machine: P-CHAN-00070 m_pre_outp[" + std::to_string(nr) + "] must be >= 0");
+      config.m_pre_output_mm[nr] = value / hli_units_per_mm;
+      }
+    }
     const YAML::Node axes = node["axes"];
     if (!axes || !axes.IsSequence() || axes.size() == 0)
       throw ConfigError("machine: 'axes' must be a non-empty list");

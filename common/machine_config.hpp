@@ -1,6 +1,7 @@
 #pragma once
 // Machine parameters: the channel and its axes. Units inside: mm, s.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,10 @@ struct MachineConfig {
   // P-STUP-00033 fb_storage_size: memory for backward motion on the path,
   // bytes; delete distance to go needs it > 0 (DDTG-11). TF5200's default 0.
   int64_t fb_storage_size = 0;
+  // P-CHAN-00070 m_pre_outp[i]: M function i goes out this far (mm; the
+  // file gives 0.1 um) along the path before its block. The NC program can
+  // change it: V.G.M_FCT[i].PRE_OUTP_PATH = <mm>.
+  std::map<int, double> m_pre_output_mm;
   std::vector<AxisConfig> axes;
 
   double cycle_time_s() const { return cycle_time_us * 1e-6; }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "decoder.hpp"
+#include "m_pre_output.hpp"
 #include "position_profile.hpp"
 #include "short_cut_target.hpp"
 
@@ -174,7 +175,7 @@ void Channel::apply_delete_distance_to_go(const HliControl& control) {
 }
 
 void Channel::queue_synchronous_actions(const Block& block) {
-  for (int m : block.m_functions) synchronous_.push_back({m, 0});
+  for (const MFunction& m : block.m_functions) synchronous_.push_back({m.nr, 0});
   if (block.dwell_s > 0) synchronous_.push_back({-1, block.dwell_s});
   if (!block.m_functions.empty() || block.dwell_s > 0) update_velocity_factor();
 }
@@ -287,7 +288,7 @@ void Channel::start_program() {
     decode_failed_ = true;
     raise(*program.error);  // reported at once; the blocks before it still run
   }
-  blocks_ = std::move(program.blocks);
+  blocks_ = apply_m_pre_output(std::move(program.blocks), machine_);
   start_cycle_ = cycle_;
   hli_.channel_state = ChannelState::active;
   refill_look_ahead();

@@ -20,8 +20,16 @@ ShortCutTarget short_cut_target(const std::vector<Block>& blocks, size_t interru
         return result;
       case ShortCutRestriction::none: break;
     }
-    if (activation == 0 ? block.has_motion : block.ddtg_end_marker && (*block.ddtg_end_marker & activation) != 0) {
-      result.target = activation == 0 ? i : motion_before(i);
+    if (activation == 0 && block.has_motion && !block.continues_block) {
+      // The whole programmed block: its parts split for pre-output M
+      // functions (those go out at the interruption point, DDTG-7 case C).
+      result.target = i;
+      for (size_t k = i + 1; k < blocks.size() && (!blocks[k].has_motion || blocks[k].continues_block); ++k)
+        if (blocks[k].has_motion) result.target = k;
+      return result;
+    }
+    if (activation != 0 && block.ddtg_end_marker && (*block.ddtg_end_marker & activation) != 0) {
+      result.target = motion_before(i);
       return result;
     }
   }

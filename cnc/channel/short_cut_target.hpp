@@ -21,7 +21,8 @@ struct ShortCutTarget {
   std::optional<size_t> channel_initialisation;
 };
 
-// From a stop in block `interrupted`: the next motion block (activation 0),
+// From a stop in block `interrupted`: the next programmed motion block
+// (activation 0; the rest of the interrupted one is dropped),
 // or the last motion block before the first #DEL DIST2GO marker with
 // END & activation != 0 (which may be `interrupted` itself).
 ShortCutTarget short_cut_target(const std::vector<Block>& blocks, size_t interrupted, uint32_t activation);

@@ -29,6 +29,14 @@ enum class DistanceProgStart { on, off, clear };
 // warning 51036).
 enum class ShortCutRestriction { none, not_skippable, channel_initialisation };
 
+// An M function of a line (MVS_SVS), and how far along the path before its
+// line it is to be output (path-related pre-output, P-CHAN-00070), mm.
+struct MFunction {
+  int nr = 0;
+  double pre_output_mm = 0;
+  bool operator==(const MFunction& other) const { return nr == other.nr && pre_output_mm == other.pre_output_mm; }
+};
+
 struct Block {
   int64_t nc_line = 0;   // 1-based line of the NC program
   // Lines the decoder has read up to this one, repeated lines ($FOR)
@@ -45,7 +53,10 @@ struct Block {
   bool program_end = false;  // M30
   // M functions of the line, output to the PLC before the line's motion and
   // acknowledged by it before the motion starts (MVS_SVS), in order.
-  std::vector<int> m_functions;
+  std::vector<MFunction> m_functions;
+  // The rest of the motion block before it, split off where a pre-output M
+  // function goes out (apply_m_pre_output): the same programmed block.
+  bool continues_block = false;
   double dwell_s = 0;  // #TIME: the path waits this long, s
   ShortCutRestriction short_cut_restriction = ShortCutRestriction::none;
 

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -184,7 +185,7 @@ class LineDecoder {
           break;
         case 'M':
           if (integer_code(w) == 30) block.program_end = true;
-          else block.m_functions.push_back(integer_code(w));
+          else block.m_functions.push_back({integer_code(w), pre_output_mm(integer_code(w))});
           break;
         case 'I': i_word = w.value; break;
         case 'J': j_word = w.value; break;
@@ -318,18 +319,33 @@ class LineDecoder {
     modal_.slope = *type;
   }
 
-  // P<n> = <expression>, after an optional N number: a decoder variable.
+  double pre_output_mm(int m) const {
+    const auto it = pre_output_mm_.find(m);
+    return it == pre_output_mm_.end() ? 0.0 : it->second;
+  }
+
+  // P<n> = <expression> (a decoder variable) or
+  // V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm> (P-CHAN-00070 for M<m> from here
+  // on), after an optional N number.
   void assign_parameter(const std::string& code, size_t equals, Block& block) {
-    static const std::regex assignment(R"(\s*(?:[Nn](\d+)\s+)?[Pp](\d+)\s*)");
+    static const std::regex assignment(
+        R"(\s*(?:[Nn](\d+)\s+)?(?:[Pp](\d+)|V\.G\.M_FCT\[\s*(\d+)\s*\]\.PRE_OUTP_PATH)\s*)", std::regex::icase);
     std::smatch match;
     const std::string left = code.substr(0, equals);
     if (!std::regex_match(left, match, assignment))
-      throw LineError{"'=' is only allowed in a P parameter assignment, P<n> = <expression>"};
+      throw LineError{"'=' is only allowed in P<n> = <expression> and V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm>"};
     if (match[1].matched) block.block_nr = std::atoll(match[1].str().c_str());
+    double value = 0;
     try {
-      parameters_[std::atoi(match[2].str().c_str())] = evaluate_expression(code.substr(equals + 1), parameters_);
+      value = evaluate_expression(code.substr(equals + 1), parameters_);
     } catch (const std::invalid_argument& e) {
       throw LineError{e.what()};
+    }
+    if (match[2].matched) {
+      parameters_[std::atoi(match[2].str().c_str())] = value;
+    } else {
+      if (value < 0) throw LineError{"PRE_OUTP_PATH must be >= 0 mm"};
+      pre_output_mm_[std::atoi(match[3].str().c_str())] = value;
     }
   }
 
@@ -412,6 +428,7 @@ class LineDecoder {
   const MachineConfig& machine_;
   std::vector<double> position_;             // machine coordinates
   ParameterValues parameters_;               // P parameters
+  std::map<int, double> pre_output_mm_ = machine_.m_pre_output_mm;  // M function pre-output, mm
   std::vector<double> offset_ = std::vector<double>(position_.size(), 0.0);  // G92: machine - program
   std::optional<CoordinateSystem> cs_;       // #CS ON
   ModalState modal_;

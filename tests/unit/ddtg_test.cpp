@@ -316,6 +316,39 @@ TEST_CASE("DDTG-7 commands in the deleted contour run at the interruption point,
   CHECK(samples.back().y == Approx(110).margin(1e-9));
 }
 
+TEST_CASE("DDTG-7 case C: an M function preset into the deleted contour goes out at the interruption point",
+          "[ddtg]") {
+  // TF5200_delete_distance_to_go.txt 2.4, case C: M7 of N220 goes out 20 mm
+  // before N220, inside N210 (at Y50); N210 is the short cut's target.
+  const std::string program =
+      "N100 V.G.M_FCT[7].PRE_OUTP_PATH = 20\nN190 G1 X0 Y0 F3000\nN200 X100\nN210 Y70\nN220 M7\nN230 X0\nM30\n";
+  const auto plain = run_with_m_functions(program, 20);
+  bool preset = false;
+  for (const SyncSample& s : plain)
+    if (s.m_request && s.m_nr == 7) preset = preset || (s.x == Approx(100).margin(1e-9) && s.y == Approx(50).margin(1e-9));
+  CHECK(preset);  // without delete distance to go: at Y50 in N210
+  const auto samples = run_with_m_functions(program, 20, 500);
+  int64_t m7 = -1, cut = -1;
+  for (const SyncSample& s : samples) {
+    if (s.m_request && s.m_nr == 7 && m7 < 0) {
+      m7 = s.cycle;
+      CHECK(s.x < 60);  // at the interruption point in N200
+      CHECK(s.y == 0);
+      CHECK(s.active);
+    }
+    if (s.active && s.y > 1e-9 && cut < 0) cut = s.cycle;
+  }
+  REQUIRE(m7 >= 0);
+  REQUIRE(cut > m7);  // the short cut, to N210's end point (not to the split point), moves after it
+  const SyncSample* before_n230 = nullptr;
+  for (const SyncSample& s : samples)
+    if (s.active) before_n230 = &s;
+  REQUIRE(before_n230 != nullptr);
+  CHECK(before_n230->y > 69);
+  CHECK(samples.back().x == Approx(0).margin(1e-9));
+  CHECK(samples.back().y == Approx(70).margin(1e-9));
+}
+
 TEST_CASE("DDTG-5 DDTG-6 short-cut targets: next motion block, or before the first valid marker", "[ddtg]") {
   const DecodedProgram p = decode_program(
       "N10 G1 X10 F1000\nN20 Y10\nN21 #DEL DIST2GO\nN22 M8\nN30 X20\nN31 #DEL DIST2GO [END=6]\nN40 Y20\nM30\n",

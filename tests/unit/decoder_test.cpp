@@ -67,7 +67,7 @@ TEST_CASE("KRN-2 decoder: an error names its line and block; the blocks before i
       {"N30 G17 X5", "G code 'G17' is not supported yet"},
       {"N30 P1 = 2 * P9", "P9 has no value yet"},
       {"N30 P1 = 2 / [1 - 1]", "division by zero"},
-      {"N30 X=5", "'=' is only allowed in a P parameter assignment"},
+      {"N30 X=5", "'=' is only allowed in P<n> = <expression>"},
       {"N30 #TIME 0", "#TIME needs a dwell time > 0"},
       {"N30 Q5", "Q is not an axis"},
       {"N30 X", "needs a number"},
@@ -184,12 +184,12 @@ TEST_CASE("KRN-1 DDTG-7 decoder: M functions, P parameters with arithmetic, #TIM
   REQUIRE_FALSE(p.error);
   REQUIRE(p.blocks.size() == 7);  // the P assignments are decoder work: no blocks
   CHECK(p.blocks[1].block_nr == 15);
-  CHECK(p.blocks[1].m_functions == std::vector<int>{48});
+  CHECK(p.blocks[1].m_functions == std::vector<MFunction>{{48, 0}});
   CHECK_FALSE(p.blocks[1].has_motion);
   CHECK(p.blocks[2].block_nr == 17);
   CHECK(p.blocks[2].dwell_s == 10);
   CHECK(p.blocks[3].has_motion);
-  CHECK(p.blocks[3].m_functions == std::vector<int>{7, 8});
+  CHECK(p.blocks[3].m_functions == std::vector<MFunction>{{7, 0}, {8, 0}});
   CHECK(p.blocks[4].dwell_s == Approx(1.5));  // -P2 = -((1 + 2) * -1.5 / 3)
   CHECK(p.blocks[6].program_end);
 }
@@ -296,4 +296,27 @@ TEST_CASE("KRN-2 decoder: #CS and #CHANNEL INIT forms that are not supported are
     REQUIRE(p.error);
     CHECK_THAT(p.error->message, Catch::Contains(c.message));
   }
+}
+
+TEST_CASE("KRN-1 DDTG-7 decoder: M function pre-output path from P-CHAN-00070 and V.G.M_FCT[i].PRE_OUTP_PATH",
+          "[decoder]") {
+  MachineConfig m = test::xyz_machine();
+  m.m_pre_output_mm[7] = 2.5;  // m_pre_outp[7] = 25000 (0.1 um)
+  const DecodedProgram p = decode_program(
+      "N10 G1 X10 F1000 M7 M8\n"
+      "N20 V.G.M_FCT[8].PRE_OUTP_PATH = P1 + 4\n"  // P1 is not set: an error, caught below
+      "N30 X20\n",
+      m, {0, 0, 0});
+  REQUIRE(p.blocks.size() == 1);
+  CHECK(p.blocks[0].m_functions == std::vector<MFunction>{{7, 2.5}, {8, 0}});
+  REQUIRE(p.error);
+  CHECK(p.error->block_nr == 20);
+  const DecodedProgram q = decode_program(
+      "N10 P1 = 1\nN20 v.g.m_fct[ 8 ].pre_outp_path = P1 + 4\nN30 G1 X10 F1000 M8\nN40 V.G.M_FCT[7].PRE_OUTP_PATH = 0\n"
+      "N50 X20 M7\n",
+      m, {0, 0, 0});
+  REQUIRE_FALSE(q.error);
+  REQUIRE(q.blocks.size() == 2);
+  CHECK(q.blocks[0].m_functions == std::vector<MFunction>{{8, 5}});
+  CHECK(q.blocks[1].m_functions == std::vector<MFunction>{{7, 0}});
 }

@@ -1,0 +1,76 @@
+#include "m_pre_output.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "path_segment.hpp"
+
+namespace hil::cnc {
+namespace {
+
+constexpr int pre_output_lookahead_blocks = 10;  // P-CHAN-00603 default
+
+// Puts `m` `distance` mm before the end of `out`'s path: between two parts
+// of the motion block there, or before the earliest block searched.
+void insert_pre_output(std::vector<Block>& out, const MFunction& m, const Block& owner, const MachineConfig& machine) {
+  double distance = m.pre_output_mm;
+  size_t insert_at = out.size();
+  int searched = 0;
+  for (size_t i = out.size(); i-- > 0 && searched < pre_output_lookahead_blocks;) {
+    if (!out[i].has_motion) continue;
+    ++searched;
+    insert_at = i;
+    const PathSegment segment(out[i].motion, machine);
+    if (distance >= segment.length() - 1e-9) {  // lies before this block
+      distance -= segment.length();
+      if (distance <= 1e-9) break;
+      continue;
+    }
+    if (distance <= 1e-9) {
+      insert_at = i + 1;
+      break;
+    }
+    Block second = out[i];
+    const std::vector<double> split = segment.position(segment.length() - distance);
+    out[i].motion.end = split;
+    out[i].program_end = false;  // M30 ends the second part
+    second.motion.start = split;
+    second.continues_block = true;
+    second.m_functions.clear();  // the line's own M functions went out before its first part
+    second.dwell_s = 0;
+    out.insert(out.begin() + static_cast<std::ptrdiff_t>(i) + 1, std::move(second));
+    insert_at = i + 1;
+    break;
+  }
+  // The M function stands as a block without motion of the line it goes out in.
+  const Block& at = insert_at < out.size() ? out[insert_at] : owner;
+  Block carrier;
+  carrier.nc_line = at.nc_line;
+  carrier.block_count = at.block_count;
+  carrier.block_nr = at.block_nr;
+  carrier.m_functions.push_back({m.nr, 0});
+  out.insert(out.begin() + static_cast<std::ptrdiff_t>(insert_at), std::move(carrier));
+}
+
+}  // namespace
+
+std::vector<Block> apply_m_pre_output(std::vector<Block> blocks, const MachineConfig& machine) {
+  const bool any = std::any_of(blocks.begin(), blocks.end(), [](const Block& b) {
+    return std::any_of(b.m_functions.begin(), b.m_functions.end(), [](const MFunction& m) { return m.pre_output_mm > 0; });
+  });
+  if (!any) return blocks;
+  std::vector<Block> out;
+  out.reserve(blocks.size() + 16);
+  for (Block& block : blocks) {
+    std::vector<MFunction> stay;
+    for (const MFunction& m : block.m_functions) {
+      if (m.pre_output_mm > 0) insert_pre_output(out, m, block, machine);
+      else stay.push_back(m);
+    }
+    block.m_functions = std::move(stay);
+    if (block.has_motion || block.has_command()) out.push_back(std::move(block));
+  }
+  return out;
+}
+
+}  // namespace hil::cnc
