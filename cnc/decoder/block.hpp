@@ -27,7 +27,7 @@ enum class DistanceProgStart { on, off, clear };
 // that must not be skipped (#CS ON/OFF: error 51016), and commands that need
 // channel initialisation (#CHANNEL INIT: the short cut ends before them,
 // warning 51036).
-enum class ShortCutRestriction { none, not_skippable, channel_initialisation };
+enum class ShortCutRestriction : uint8_t { none, not_skippable, channel_initialisation };
 
 // An M function of a line (MVS_SVS), and how far along the path before its
 // line it is to be output (path-related pre-output, P-CHAN-00070), mm.
@@ -44,6 +44,10 @@ struct Block {
   int64_t block_count = 0;
   int64_t block_nr = 0;  // N number, 0 if the line has none
   bool has_motion = false;
+  // The rest of the motion block before it, split off where a pre-output M
+  // function goes out (apply_m_pre_output): the same programmed block.
+  bool continues_block = false;
+  ShortCutRestriction short_cut_restriction = ShortCutRestriction::none;
   Motion motion;
   SlopeType slope = SlopeType::trapez;  // #SLOPE[TYPE=..] in force for the motion
   std::optional<DistanceProgStart> distance_prog_start;
@@ -54,11 +58,7 @@ struct Block {
   // M functions of the line, output to the PLC before the line's motion and
   // acknowledged by it before the motion starts (MVS_SVS), in order.
   std::vector<MFunction> m_functions;
-  // The rest of the motion block before it, split off where a pre-output M
-  // function goes out (apply_m_pre_output): the same programmed block.
-  bool continues_block = false;
   double dwell_s = 0;  // #TIME: the path waits this long, s
-  ShortCutRestriction short_cut_restriction = ShortCutRestriction::none;
 
   // The path stands still where this block is reached: for the PLC's
   // acknowledgement, a dwell, or a channel initialisation.

@@ -221,3 +221,23 @@ expect_events:
   CHECK_FALSE(results[3].passed);  // the warning appeared although it must not
   CHECK_THAT(results[3].what, Catch::Contains("no warning (P-AXIS-00441)"));
 }
+
+TEST_CASE("KRN-1 machine file: m_pre_outp (P-CHAN-00070) in 0.1 um, refused when negative", "[scenario]") {
+  const Scenario s = parse_scenario(YAML::Load(R"(
+machine:
+  m_pre_outp: {7: 250000, 11: 0}
+  axes:
+    - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002}
+nc_program: "M30\n"
+)"));
+  CHECK(s.machine.m_pre_output_mm.at(7) == Approx(25.0));
+  CHECK(s.machine.m_pre_output_mm.at(11) == 0);
+  CHECK_THROWS_WITH(parse_scenario(YAML::Load(R"(
+machine:
+  m_pre_outp: {7: -1}
+  axes:
+    - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002}
+nc_program: "M30\n"
+)")),
+                    Catch::Contains("P-CHAN-00070 m_pre_outp[7] must be >= 0"));
+}
