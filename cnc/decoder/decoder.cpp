@@ -242,14 +242,19 @@ class LineDecoder {
     else if (command.rfind("#DEL DIST2GO", 0) == 0) block.ddtg_end_marker = decode_end_marker(command);
     else if (command.rfind("#TIME", 0) == 0) block.dwell_s = decode_dwell(command);
     else if (command.rfind("#CS ", 0) == 0) decode_coordinate_system(command, block);
-    else if (command == "#CHANNEL INIT [CMDPOS]" || command == "#CHANNEL INIT[CMDPOS]") {
-      // The command positions the interpolator would report are the ones
-      // decoded: this rig has no manual mode offsets. The path stands still
-      // there (Block::stops_path).
-      block.short_cut_restriction = ShortCutRestriction::channel_initialisation;
-    } else if (command.rfind("#CHANNEL INIT", 0) == 0)
-      throw LineError{"#CHANNEL INIT takes [CMDPOS] (ACTPOS and single axes are not supported yet)"};
+    else if (command.rfind("#CHANNEL INIT", 0) == 0) decode_channel_init(command, block);
     else throw LineError{"command '" + command.substr(0, command.find_first_of(" [")) + "' is not supported yet"};
+  }
+
+  // #CHANNEL INIT [CMDPOS]: the command positions the interpolator would
+  // report are the ones decoded (this rig has no manual mode offsets); the
+  // path stands still there (Block::stops_path).
+  static void decode_channel_init(const std::string& command, Block& block) {
+    std::string args = command.substr(13);
+    args.erase(std::remove(args.begin(), args.end(), ' '), args.end());
+    if (args != "[CMDPOS]")
+      throw LineError{"#CHANNEL INIT takes [CMDPOS] (ACTPOS and single axes are not supported yet)"};
+    block.short_cut_restriction = ShortCutRestriction::channel_initialisation;
   }
 
   // #CS ON [v1,v2,v3,φ1,φ2,φ3], #CS ON [<id>] [..], #CS OFF; one CS at a time.

@@ -254,7 +254,7 @@ TEST_CASE("KRN-1 DDTG-8 decoder: #CS ON [v1,v2,v3,φ1,φ2,φ3] offsets and rotat
       "N80 #CS ON [,,-2]\n"           // translation only, gaps are 0
       "N90 Z0\n"
       "N95 #CS OFF\n"
-      "N100 #CHANNEL INIT [CMDPOS]\n");
+      "N100 #channel init [ cmdpos ]\n");
   if (p.error) FAIL(p.error->message);
   REQUIRE(p.blocks.size() == 12);
   CHECK(p.blocks[1].short_cut_restriction == ShortCutRestriction::not_skippable);
