@@ -43,7 +43,7 @@ void Channel::drive_error(const std::string& axis, const std::string& what) {
 
 void Channel::update_velocity_factor() {
   const bool stop = hli_.feedhold.state_r || ddtg_requested_ || hli_.channel_state == ChannelState::error ||
-                    !synchronous_.empty() || hli_.backward_motion.request_r;
+                    !synchronous_.empty() || direction_change_pending();
   look_ahead_.set_velocity_factor(stop ? 0.0 : hli_.override.state_r / static_cast<double>(override_full));
   replan_ = true;
 }
@@ -75,7 +75,25 @@ void Channel::step(int64_t cycle, const HliControl& control) {
     const bool standing = look_ahead_.empty() || t - plan_start_ >= plan_.duration();
     if (error_stop_ && standing) error_stop_ = false;
     if (ddtg_requested_ && standing && hli_.channel_state == ChannelState::active) start_short_cut(t);
+    if (direction_change_pending() && hli_.channel_state == ChannelState::active) {
+      if (on_short_cut()) {  // DDTG-10: not on a short cut; it stands until the request is taken back
+        if (!reversal_refused_warned_) {
+          Event held = event_at_block(
+              Severity::warning, backward_ ? "forward motion is not possible on a backward delete distance to go short "
+                                             "cut; held until backward motion is requested again"
+                                           : "backward motion is not possible on a delete distance to go short cut; "
+                                             "held until withdrawn");
+          held.id = 50729;
+          raise(held);
+          reversal_refused_warned_ = true;
+        }
+      } else if (standing && !ddtg_requested_ && machine_.fb_storage_size > 0) {
+        reverse_direction(t);
+      }
+    }
+    if (!direction_change_pending()) reversal_refused_warned_ = false;
   }
+  hli_.backward_motion.state_r = backward_;
   hli_.delete_distance_to_go.state_r = ddtg_requested_ || hli_.delete_distance_to_go_active_r;
   for (size_t i = 0; i < setpoints_.size(); ++i)
     hli_.axis_position_r[i] = std::llround(setpoints_[i].position * hli_units_per_mm);
@@ -124,16 +142,14 @@ void Channel::apply_velocity_control(const HliControl& control) {
   }
   previous_override_command_ = value;
   value = std::clamp(value, 0, highest);
-  // DDTG-10: backward motion on the path is not built; a request holds the
-  // path, with a warning, until it is withdrawn (on a short cut: 50729).
+  // KRN-5: backward_motion is a level. A change of it stops the path, which
+  // then goes on the other way (step); without P-STUP-00033 a request only
+  // holds the path until it is withdrawn.
   const bool backward = control.backward_motion.command_w && control.backward_motion.enable_w;
-  if (backward && !hli_.backward_motion.request_r) {
-    const bool on_short_cut = hli_.delete_distance_to_go_active_r;
-    Event held = event_at_block(
-        Severity::warning, on_short_cut
-                               ? "backward motion is not possible on a delete distance to go short cut; held until withdrawn"
-                               : "backward motion on the path is not available in this CNC; held until withdrawn");
-    if (on_short_cut) held.id = 50729;
+  if (backward && !hli_.backward_motion.request_r && machine_.fb_storage_size == 0) {
+    Event held = event_at_block(Severity::warning,
+                                "backward motion on the path needs P-STUP-00033 fb_storage_size > 0; held until withdrawn");
+    held.parameter = "P-STUP-00033";
     raise(held);
   }
   const bool backward_changed = backward != hli_.backward_motion.request_r;
@@ -207,6 +223,10 @@ void Channel::run_synchronous_actions(const HliControl& control, double t) {
 }
 
 void Channel::start_short_cut(double t) {
+  if (backward_) {
+    start_backward_short_cut(t);
+    return;
+  }
   ddtg_requested_ = false;
   const LookAheadBlock& front = look_ahead_.front();
   const double length = front.segment.length();
@@ -221,7 +241,7 @@ void Channel::start_short_cut(double t) {
   // target (non-motion blocks) runs at the stop position, before the short cut.
   const uint32_t mask = static_cast<uint32_t>(hli_.delete_distance_to_go_activation.state_r);
   const ShortCutTarget found = short_cut_target(blocks_, front.block_index, mask);
-  next_to_run_ = front.block_index + 1;
+  next_to_run_ = std::max(next_to_run_, front.block_index + 1);  // after backward motion: ran already
   look_ahead_.clear();
   hli_.delete_distance_to_go_active_r = false;
   update_velocity_factor();
@@ -298,6 +318,10 @@ void Channel::start_program() {
 }
 
 void Channel::refill_look_ahead() {
+  if (backward_) {
+    refill_backward();
+    return;
+  }
   for (; !look_ahead_.full() && next_to_look_ahead_ < blocks_.size(); ++next_to_look_ahead_) {
     const Block& block = blocks_[next_to_look_ahead_];
     if (!block.has_motion) continue;
@@ -308,6 +332,7 @@ void Channel::refill_look_ahead() {
       if (i < next_to_look_ahead_ && blocks_[i].has_motion) break;
       stop_before = stop_before || blocks_[i].stops_path();
     }
+    if (next_to_look_ahead_ < blocks_begun_) stop_before = false;  // forward again after backward motion: ran already
     look_ahead_.push(next_to_look_ahead_, PathSegment(block.motion, machine_), block.slope, stop_before);
   }
 }
@@ -319,7 +344,10 @@ void Channel::begin_front(const MotionState& state, double t0) {
   hli_.block_nr_r = block.block_nr;
   hli_.block_count_r = block.block_count;
   current_nc_line_ = block.nc_line;
-  queue_synchronous_actions(block);  // its M functions go out before its motion (MVS_SVS)
+  if (!backward_ && front.block_index >= blocks_begun_) {
+    queue_synchronous_actions(block);  // its M functions go out before its motion (MVS_SVS)
+    blocks_begun_ = front.block_index + 1;
+  }
   plan(state, t0);
 }
 
@@ -335,10 +363,11 @@ void Channel::plan(const MotionState& state, double t0) {
 
 void Channel::finish_front() {
   const LookAheadBlock& front = look_ahead_.front();
-  if (dps_counting_) dps_before_front_ += front.segment.covered_distance();
+  if (dps_counting_) dps_before_front_ += direction_sign() * front.segment.covered_distance();
   if (hli_.delete_distance_to_go_active_r && front.block_index == short_cut_target_)
     hli_.delete_distance_to_go_active_r = false;  // DDTG-4: the short cut is done
-  next_to_run_ = front.block_index + 1;
+  if (!backward_) next_to_run_ = std::max(next_to_run_, front.block_index + 1);
+  last_finished_block_ = front.block_index;
   look_ahead_.pop_front();
   refill_look_ahead();
 }
@@ -377,6 +406,9 @@ void Channel::interpolate(double t) {
     if (look_ahead_.empty()) {
       // Leave the last block exactly on its programmed end point.
       for (size_t i = 0; i < setpoints_.size(); ++i) setpoints_[i] = {end_point[i], 0, 0};
+      if (backward_)
+        raise(event_at_block(Severity::warning, "backward motion reached the start of the stored contour "
+                                                "(program start, or P-STUP-00033 full); it stands there"));
       break;
     }
     // Go on from where the path left the block: at t, or where a plan that
@@ -389,6 +421,11 @@ void Channel::interpolate(double t) {
     path.p -= length;
     begin_front(path, t_from);
     path = path_state_at(t);
+  }
+  if (look_ahead_.empty() && backward_) {  // stands where the stored contour begins
+    hli_.dist_prog_start = dps_before_front_ * hli_units_per_mm;
+    hli_.path_velocity = 0;
+    return;
   }
   if (look_ahead_.empty()) {
     // Every block decoded correctly has run; a decode error now stops the channel.
@@ -411,7 +448,7 @@ void Channel::output(const MotionState& path) {
   for (size_t i = 0; i < setpoints_.size(); ++i)
     setpoints_[i] = {p[i], d1[i] * path.v, d1[i] * path.a + d2[i] * path.v * path.v};
   const double covered = dps_counting_ ? seg.covered_distance() * s / seg.length() : 0.0;
-  hli_.dist_prog_start = (dps_before_front_ + covered) * hli_units_per_mm;
+  hli_.dist_prog_start = (dps_before_front_ + direction_sign() * covered) * hli_units_per_mm;
   hli_.path_velocity = path.v;
 }
 

@@ -55,6 +55,17 @@ class Channel {
   // the next motion block by a linear short cut to the latter's end point
   // (DDTG-5: everything up to the first valid end marker).
   void start_short_cut(double t);
+  // KRN-5 (backward_motion.cpp): the path stands still; go on along the
+  // stored contour the other way. The short cut backward goes to the start
+  // point of the block before the interrupted one (DDTG-10).
+  void reverse_direction(double t);
+  void refill_backward();
+  void start_backward_short_cut(double t);
+  // The PLC's backward_motion request differs from the direction moved in.
+  bool direction_change_pending() const { return hli_.backward_motion.request_r != backward_; }
+  // The path runs on a short cut; its direction cannot change (DDTG-10).
+  bool on_short_cut() const { return hli_.delete_distance_to_go_active_r; }
+  double direction_sign() const { return backward_ ? -1.0 : 1.0; }
   // M functions and dwells of a block, in order, before its motion.
   void queue_synchronous_actions(const Block& block);
   // Outputs the next M function, takes the PLC's acknowledgement, counts
@@ -91,6 +102,15 @@ class Channel {
   bool error_stop_ = false;        // stopping on a drive error: still moving
   bool ddtg_requested_ = false;    // delete distance to go: stopping for the short cut (DDTG-1)
   bool previous_ddtg_command_ = false;
+  // Backward motion on the path (KRN-5): the blocks stored for it are the
+  // original contour of the motion blocks below blocks_begun_, as many as
+  // P-STUP-00033 holds (a block takes sizeof(Block) bytes).
+  bool backward_ = false;          // the path moves (or stands, set to move) backward
+  size_t blocks_begun_ = 0;        // 1 + the furthest block run forward; their commands ran
+  size_t next_backward_ = 0;       // going backward, blocks below this enter the look-ahead next
+  size_t lowest_stored_ = 0;       // the first block still stored for backward motion
+  size_t last_finished_block_ = 0; // the block the path left last (where it stands if the look-ahead is empty)
+  bool reversal_refused_warned_ = false;  // 50729 raised for the pending direction change
   size_t short_cut_target_ = 0;    // while a short cut runs: the block whose end point it goes to
   bool short_cut_rapid_ = false;   // the short cut runs in G00 (DDTG-2)
   // What the path waits for, in order: an M function's acknowledgement

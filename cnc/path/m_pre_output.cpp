@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "motion_parts.hpp"
 #include "path_segment.hpp"
 
 namespace hil::cnc {
@@ -32,9 +33,9 @@ void insert_pre_output(std::vector<Block>& out, const MFunction& m, const Block&
     }
     Block second = out[i];
     const std::vector<double> split = segment.position(segment.length() - distance);
-    out[i].motion.end = split;
+    out[i].motion = motion_until(out[i].motion, split);
     out[i].program_end = false;  // M30 ends the second part
-    second.motion.start = split;
+    second.motion = motion_from(second.motion, split);
     second.continues_block = true;
     second.m_functions.clear();  // the line's own M functions went out before its first part
     second.dwell_s = 0;
