@@ -62,8 +62,12 @@ void Channel::reverse_direction(double t) {
   // way back over block k is what it had covered before the front and on it.
   const double back_over_k = PathSegment(blocks_[k].motion, machine_).length() - length + s;
   if (back_over_k > shortest_rest_mm) look_ahead_.push(k, PathSegment(motion, machine_), blocks_[k].slope);
+  last_finished_block_ = k;  // where the path stands if nothing follows: at block k's start
   refill_look_ahead();
-  if (look_ahead_.empty()) return;
+  if (look_ahead_.empty()) {
+    if (backward_) raise(event_at_block(Severity::warning, "backward motion: the stored contour begins here; it stands"));
+    return;
+  }
   begin_front({}, t);
   replan_ = false;
 }

@@ -202,3 +202,35 @@ TEST_CASE("DDTG-10 delete distance to go in backward motion short-cuts backward;
   CHECK(r.end().x == Approx(0).margin(1e-9));
   CHECK(r.end().y == Approx(0).margin(1e-9));
 }
+
+TEST_CASE("KRN-5 backward requested at the program start: the path stands there; withdrawn, the program runs",
+          "[backward]") {
+  // The request reaches the CNC one cycle after the start: the path has
+  // begun to move, stops within micrometres and goes back to the start.
+  const Run r = run(square, [&](const Run& r, HliControl& c) { c.backward_motion.command_w = r.samples.size() < 300; });
+  for (const Sample& s : r.samples)
+    if (s.cycle < 300) {
+      CHECK(s.x >= 0);
+      CHECK(s.x < 0.001);
+      CHECK(s.y == 0);
+    }
+  CHECK(r.samples.at(290).x == 0);
+  bool warned = false;
+  for (const Event& e : r.events) warned = warned || e.message.find("stored contour") != std::string::npos;
+  CHECK(warned);
+  CHECK(r.end().x == Approx(0).margin(1e-9));
+  CHECK(r.end().y == Approx(0).margin(1e-9));
+  CHECK(r.end().dps == Approx(200).margin(1e-6));
+}
+
+TEST_CASE("KRN-5 without P-STUP-00033 a backward request only holds the path, with a warning", "[backward]") {
+  const Run r = run(square, [&](const Run& r, HliControl& c) {
+    const Sample& s = r.samples.back();
+    c.backward_motion.command_w = s.block_nr == 20 && s.cycle < 3000;
+  }, 0);
+  bool warned = false;
+  for (const Event& e : r.events) warned = warned || e.parameter == "P-STUP-00033";
+  CHECK(warned);
+  for (const Sample& s : r.samples) CHECK_FALSE(s.backward);
+  CHECK(r.end().dps == Approx(200).margin(1e-6));
+}
