@@ -24,13 +24,13 @@ size_t stored_blocks(const MachineConfig& machine) {
 }  // namespace
 
 void Channel::reverse_direction(double t) {
-  const bool was_backward = backward_;
-  backward_ = !backward_;
-  update_velocity_factor();
   if (look_ahead_.empty()) {
-    // Standing where the stored contour begins: forward from that block's start.
-    // (Standing at the program end the channel is no longer active.)
-    if (was_backward) {
+    // Standing where the stored contour begins: forward from that block's
+    // start. (Forward with nothing left to move, the program is about to
+    // end: it cannot turn there.)
+    if (backward_) {
+      backward_ = false;
+      update_velocity_factor();
       next_to_look_ahead_ = last_finished_block_;
       refill_look_ahead();
       if (!look_ahead_.empty()) begin_front({}, t);
@@ -42,7 +42,9 @@ void Channel::reverse_direction(double t) {
   const size_t k = front.block_index;
   const double length = front.segment.length();
   const double s = std::clamp(path_state_at(t).p, 0.0, length);
-  if (dps_counting_ && length > 0) dps_before_front_ += -direction_sign() * front.segment.covered_distance() * s / length;
+  if (dps_counting_ && length > 0) dps_before_front_ += direction_sign() * front.segment.covered_distance() * s / length;
+  backward_ = !backward_;
+  update_velocity_factor();
   std::vector<double> here(setpoints_.size());
   for (size_t i = 0; i < here.size(); ++i) here[i] = setpoints_[i].position;
   // What is left of block k the new way: back to its start, or on to its end.

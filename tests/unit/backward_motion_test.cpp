@@ -234,3 +234,16 @@ TEST_CASE("KRN-5 without P-STUP-00033 a backward request only holds the path, wi
   for (const Sample& s : r.samples) CHECK_FALSE(s.backward);
   CHECK(r.end().dps == Approx(200).margin(1e-6));
 }
+
+TEST_CASE("KRN-5 a backward request while the program's last M function waits: the program still ends there",
+          "[backward]") {
+  int waited = 0;
+  const Run r = run("N10 G1 X50 F3000\nN20 M7\nM30\n", [&](const Run& r, HliControl& c) {
+    const Sample& s = r.samples.back();
+    c.backward_motion.command_w = s.x == 50;
+    if (++waited < 3000) c.m_function_ack.command_w = false;  // acknowledged late
+  });
+  for (const Sample& s : r.samples) CHECK(s.x <= 50);
+  CHECK(r.end().x == Approx(50).margin(1e-9));
+  CHECK(r.samples.size() < 10000);  // it ended
+}
