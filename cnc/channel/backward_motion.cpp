@@ -23,6 +23,27 @@ size_t stored_blocks(const MachineConfig& machine) {
 
 }  // namespace
 
+void Channel::change_direction(double t, bool standing) {
+  if (!direction_change_pending()) {
+    reversal_refused_warned_ = false;
+    return;
+  }
+  if (!on_short_cut()) {
+    if (standing && !ddtg_requested_ && machine_.fb_storage_size > 0) reverse_direction(t);
+    return;
+  }
+  // DDTG-10: not on a short cut; it stands until the request is taken back.
+  if (reversal_refused_warned_) return;
+  Event held = event_at_block(Severity::warning, backward_ ? "forward motion is not possible on a backward delete "
+                                                             "distance to go short cut; held until backward motion "
+                                                             "is requested again"
+                                                           : "backward motion is not possible on a delete distance "
+                                                             "to go short cut; held until withdrawn");
+  held.id = 50729;
+  raise(held);
+  reversal_refused_warned_ = true;
+}
+
 void Channel::reverse_direction(double t) {
   if (look_ahead_.empty()) {
     // Standing where the stored contour begins: forward from that block's

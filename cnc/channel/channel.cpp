@@ -75,23 +75,7 @@ void Channel::step(int64_t cycle, const HliControl& control) {
     const bool standing = look_ahead_.empty() || t - plan_start_ >= plan_.duration();
     if (error_stop_ && standing) error_stop_ = false;
     if (ddtg_requested_ && standing && hli_.channel_state == ChannelState::active) start_short_cut(t);
-    if (direction_change_pending() && hli_.channel_state == ChannelState::active) {
-      if (on_short_cut()) {  // DDTG-10: not on a short cut; it stands until the request is taken back
-        if (!reversal_refused_warned_) {
-          Event held = event_at_block(
-              Severity::warning, backward_ ? "forward motion is not possible on a backward delete distance to go short "
-                                             "cut; held until backward motion is requested again"
-                                           : "backward motion is not possible on a delete distance to go short cut; "
-                                             "held until withdrawn");
-          held.id = 50729;
-          raise(held);
-          reversal_refused_warned_ = true;
-        }
-      } else if (standing && !ddtg_requested_ && machine_.fb_storage_size > 0) {
-        reverse_direction(t);
-      }
-    }
-    if (!direction_change_pending()) reversal_refused_warned_ = false;
+    if (hli_.channel_state == ChannelState::active) change_direction(t, standing);
   }
   hli_.backward_motion.state_r = backward_;
   hli_.delete_distance_to_go.state_r = ddtg_requested_ || hli_.delete_distance_to_go_active_r;

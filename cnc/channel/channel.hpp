@@ -59,6 +59,9 @@ class Channel {
   // stored contour the other way. The short cut backward goes to the start
   // point of the block before the interrupted one (DDTG-10).
   void reverse_direction(double t);
+  // Each cycle: a pending direction change turns the path once it stands,
+  // or is refused with 50729 while a short cut runs.
+  void change_direction(double t, bool standing);
   void refill_backward();
   void start_backward_short_cut(double t);
   // The PLC's backward_motion request differs from the direction moved in.

@@ -382,8 +382,8 @@ TEST_CASE("DDTG-11 delete distance to go needs P-STUP-00033 > 0", "[ddtg]") {
 }
 
 TEST_CASE("DDTG-10 a backward request on a short cut holds it with warning 50729 until withdrawn", "[ddtg]") {
-  // Backward motion on the path is not built: every request holds the path;
-  // on a short cut with the warning the text names.
+  // TF5200_delete_distance_to_go.txt 2.7: the short cut is not stored for
+  // backward motion; the request holds it with the warning the text names.
   const MachineConfig m = test::xyz_machine();
   Channel channel(m, "N10 G1 X80 F3000\nN20 Y60\nN30 X0\nM30\n");
   logger::LimitChecker checker(m);
