@@ -292,7 +292,9 @@ void Channel::start_program() {
     decode_failed_ = true;
     raise(*program.error);  // reported at once; the blocks before it still run
   }
-  blocks_ = apply_m_pre_output(std::move(program.blocks), machine_);
+  std::vector<Event> warnings;
+  blocks_ = apply_m_pre_output(std::move(program.blocks), machine_, warnings);
+  for (Event& warning : warnings) raise(std::move(warning));
   start_cycle_ = cycle_;
   hli_.channel_state = ChannelState::active;
   refill_look_ahead();

@@ -10,11 +10,16 @@ namespace hil::cnc {
 namespace {
 
 constexpr int pre_output_lookahead_blocks = 10;  // P-CHAN-00603 default
+// No part shorter than this (10 nm) is split off: a shorter arc could not be
+// told from a full circle.
+constexpr double shortest_part_mm = 1e-5;
 
 // Puts `m` `distance` mm before the end of `out`'s path: between two parts
 // of the motion block there, or before the earliest block searched.
-void insert_pre_output(std::vector<Block>& out, const MFunction& m, const Block& owner, const MachineConfig& machine) {
+// False if the path before it was shorter than the pre-output path.
+bool insert_pre_output(std::vector<Block>& out, const MFunction& m, const Block& owner, const MachineConfig& machine) {
   double distance = m.pre_output_mm;
+  bool reached = false;
   size_t insert_at = out.size();
   int searched = 0;
   for (size_t i = out.size(); i-- > 0 && searched < pre_output_lookahead_blocks;) {
@@ -22,12 +27,14 @@ void insert_pre_output(std::vector<Block>& out, const MFunction& m, const Block&
     ++searched;
     insert_at = i;
     const PathSegment segment(out[i].motion, machine);
-    if (distance >= segment.length() - 1e-9) {  // lies before this block
+    if (distance >= segment.length() - shortest_part_mm) {  // lies before this block
       distance -= segment.length();
-      if (distance <= 1e-9) break;
+      reached = distance <= shortest_part_mm;
+      if (reached) break;
       continue;
     }
-    if (distance <= 1e-9) {
+    reached = true;
+    if (distance <= shortest_part_mm) {  // at its end
       insert_at = i + 1;
       break;
     }
@@ -51,11 +58,13 @@ void insert_pre_output(std::vector<Block>& out, const MFunction& m, const Block&
   carrier.block_nr = at.block_nr;
   carrier.m_functions.push_back({m.nr, 0});
   out.insert(out.begin() + static_cast<std::ptrdiff_t>(insert_at), std::move(carrier));
+  return reached;
 }
 
 }  // namespace
 
-std::vector<Block> apply_m_pre_output(std::vector<Block> blocks, const MachineConfig& machine) {
+std::vector<Block> apply_m_pre_output(std::vector<Block> blocks, const MachineConfig& machine,
+                                      std::vector<Event>& warnings) {
   const bool any = std::any_of(blocks.begin(), blocks.end(), [](const Block& b) {
     return std::any_of(b.m_functions.begin(), b.m_functions.end(), [](const MFunction& m) { return m.pre_output_mm > 0; });
   });
@@ -65,8 +74,21 @@ std::vector<Block> apply_m_pre_output(std::vector<Block> blocks, const MachineCo
   for (Block& block : blocks) {
     std::vector<MFunction> stay;
     for (const MFunction& m : block.m_functions) {
-      if (m.pre_output_mm > 0) insert_pre_output(out, m, block, machine);
-      else stay.push_back(m);
+      if (m.pre_output_mm <= 0) {
+        stay.push_back(m);
+      } else if (!insert_pre_output(out, m, block, machine)) {
+        Event short_path;
+        short_path.severity = Severity::warning;
+        short_path.parameter = "P-CHAN-00070";
+        short_path.nc_line = block.nc_line;
+        short_path.block_nr = block.block_nr;
+        short_path.value = m.pre_output_mm;
+        short_path.message = "M" + std::to_string(m.nr) + ": pre-output path " + std::to_string(m.pre_output_mm) +
+                             " mm reaches past the program start or the " +
+                             std::to_string(pre_output_lookahead_blocks) +
+                             " motion blocks searched (P-CHAN-00603); output as early as they allow";
+        warnings.push_back(short_path);
+      }
     }
     block.m_functions = std::move(stay);
     if (block.has_motion || block.has_command()) out.push_back(std::move(block));

@@ -12,11 +12,15 @@ using namespace hil::cnc;
 
 namespace {
 
-std::vector<Block> prepared(const std::string& program) {
+std::vector<Block> prepared(const std::string& program, std::vector<Event>* warnings = nullptr) {
   const MachineConfig m = test::xyz_machine();
   DecodedProgram p = decode_program(program, m, {0, 0, 0});
   if (p.error) FAIL(p.error->message);
-  return apply_m_pre_output(std::move(p.blocks), m);
+  std::vector<Event> seen;
+  std::vector<Block> blocks = apply_m_pre_output(std::move(p.blocks), m, seen);
+  if (warnings) *warnings = seen;
+  else CHECK(seen.empty());
+  return blocks;
 }
 
 // "N<nr> M<m>" for an M block, "N<nr> X<end>" (+ "'" for a continued part) for motion.
@@ -47,9 +51,18 @@ TEST_CASE("KRN-1 M function pre-output: the motion block where it goes out is sp
   // Exactly on a block end: no split.
   CHECK(outline(prepared("V.G.M_FCT[11].PRE_OUTP_PATH = 10\nN10 G01 X10 F5000\nN20 X20\nN30 X30 M11\n")) ==
         std::vector<std::string>{"N10 X10", "N20 M11", "N20 X20", "N30 X30"});
-  // Further back than the program goes: before its first motion.
-  CHECK(outline(prepared("V.G.M_FCT[11].PRE_OUTP_PATH = 100\nN10 G01 X10 F5000\nN20 X20 M11 M12\n")) ==
+  // Further back than the program goes: before its first motion, with a warning.
+  std::vector<Event> warnings;
+  CHECK(outline(prepared("V.G.M_FCT[11].PRE_OUTP_PATH = 100\nN10 G01 X10 F5000\nN20 X20 M11 M12\n", &warnings)) ==
         std::vector<std::string>{"N10 M11", "N10 X10", "N20 X20 M12"});
+  REQUIRE(warnings.size() == 1);
+  CHECK(warnings[0].parameter == "P-CHAN-00070");
+  CHECK(warnings[0].block_nr == 20);
+  // Within 10 nm of an arc's end or start: no split (a sliver of an arc would be a full circle).
+  CHECK(outline(prepared("V.G.M_FCT[7].PRE_OUTP_PATH = 0.0000001\nN10 G2 X20 Y0 I10 F5000\nN20 G1 X30 M7\n")) ==
+        std::vector<std::string>{"N10 X20", "N20 M7", "N20 X30"});
+  CHECK(outline(prepared("V.G.M_FCT[7].PRE_OUTP_PATH = 31.4159264\nN10 G2 X20 Y0 I10 F5000\nN20 G1 X30 M7\n")) ==
+        std::vector<std::string>{"N10 M7", "N10 X20", "N20 X30"});
   // A block without motion: from where it stands; the line's own M functions stay on the first part.
   CHECK(outline(prepared("V.G.M_FCT[7].PRE_OUTP_PATH = 4\nN10 G01 X10 F5000 M3\nN20 M7\nN30 X20\n")) ==
         std::vector<std::string>{"N10 X6 M3", "N10 M7", "N10 X10'", "N30 X20"});
@@ -59,7 +72,9 @@ TEST_CASE("KRN-1 M function pre-output searches back at most 10 motion blocks (P
   std::string program = "V.G.M_FCT[7].PRE_OUTP_PATH = 11.5\nG01 F5000\n";
   for (int i = 1; i <= 12; ++i) program += "N" + std::to_string(i) + " X" + std::to_string(i) + "\n";
   program += "N13 X13 M7\n";
-  const auto blocks = outline(prepared(program));
+  std::vector<Event> warnings;
+  const auto blocks = outline(prepared(program, &warnings));
+  CHECK(warnings.size() == 1);
   REQUIRE(blocks.size() == 14);
   CHECK(blocks[2] == "N3 M7");  // before N3, the 10th block back from N13 (11.5 mm would be in N2)
 }
