@@ -53,24 +53,17 @@ void Channel::reverse_direction(double t) {
       backward_ = false;
       update_velocity_factor();
       next_to_look_ahead_ = last_finished_block_;
-      refill_look_ahead();
-      if (!look_ahead_.empty()) begin_front({}, t);
-      replan_ = false;
+      go_on_from_standstill(t);
     }
     return;
   }
-  const LookAheadBlock& front = look_ahead_.front();
-  const size_t k = front.block_index;
-  const double length = front.segment.length();
-  const double s = std::clamp(path_state_at(t).p, 0.0, length);
-  if (dps_counting_ && length > 0) dps_before_front_ += direction_sign() * front.segment.covered_distance() * s / length;
+  const StopPoint stop = leave_front(t);
+  const size_t k = stop.block;
   backward_ = !backward_;
   update_velocity_factor();
-  std::vector<double> here(setpoints_.size());
-  for (size_t i = 0; i < here.size(); ++i) here[i] = setpoints_[i].position;
   // What is left of block k the new way: back to its start, or on to its end.
-  const Motion motion = backward_ ? reversed(motion_until(blocks_[k].motion, here)) : motion_from(blocks_[k].motion, here);
-  look_ahead_.clear();
+  const Motion motion = backward_ ? reversed(motion_until(blocks_[k].motion, stop.position))
+                                  : motion_from(blocks_[k].motion, stop.position);
   if (backward_) {
     // The stored contour: as many motion blocks below the furthest one run as P-STUP-00033 holds.
     size_t i = blocks_begun_, counted = 0;
@@ -83,16 +76,13 @@ void Channel::reverse_direction(double t) {
   }
   // The front segment ends where block k ends in the old direction, so the
   // way back over block k is what it had covered before the front and on it.
-  const double back_over_k = PathSegment(blocks_[k].motion, machine_).length() - length + s;
+  const double back_over_k = PathSegment(blocks_[k].motion, machine_).length() - stop.front_length + stop.s;
   if (back_over_k > shortest_rest_mm) look_ahead_.push(k, PathSegment(motion, machine_), blocks_[k].slope);
   last_finished_block_ = k;  // where the path stands if nothing follows: at block k's start
   refill_look_ahead();
-  if (look_ahead_.empty()) {
-    if (backward_) raise(event_at_block(Severity::warning, "backward motion: the stored contour begins here; it stands"));
-    return;
-  }
-  begin_front({}, t);
-  replan_ = false;
+  if (look_ahead_.empty() && backward_)
+    raise(event_at_block(Severity::warning, "backward motion: the stored contour begins here; it stands"));
+  go_on_from_standstill(t);
 }
 
 void Channel::refill_backward() {
@@ -107,22 +97,11 @@ void Channel::refill_backward() {
 // short cut goes to its start point, and backward motion goes on from there.
 void Channel::start_backward_short_cut(double t) {
   ddtg_requested_ = false;
-  const LookAheadBlock& front = look_ahead_.front();
-  const size_t k = front.block_index;
-  const double length = front.segment.length();
-  const double s = std::clamp(path_state_at(t).p, 0.0, length);
-  if (dps_counting_ && length > 0) dps_before_front_ -= front.segment.covered_distance() * s / length;
-  const bool rapid = on_short_cut() ? short_cut_rapid_ : blocks_[k].motion.type == MotionType::rapid;
-  const double interrupted_feed = blocks_[k].motion.feed;
-  std::vector<double> stop(setpoints_.size());
-  for (size_t i = 0; i < stop.size(); ++i) stop[i] = setpoints_[i].position;
-  look_ahead_.clear();
-  hli_.delete_distance_to_go_active_r = false;
-  update_velocity_factor();
-  size_t target = k;
+  const StopPoint stop = leave_front(t);
+  size_t target = stop.block;
   while (target > lowest_stored_ && !blocks_[--target].has_motion) {
   }
-  if (target == k || !blocks_[target].has_motion) {  // DDTG-6: nothing stored before it
+  if (target == stop.block || !blocks_[target].has_motion) {  // DDTG-6: nothing stored before it
     Event none = event_at_block(Severity::warning,
                                 "delete distance to go in backward motion: no stored motion block before this one; "
                                 "motion ends at the stop position");
@@ -131,23 +110,8 @@ void Channel::start_backward_short_cut(double t) {
     next_backward_ = lowest_stored_;
     return;
   }
-  Motion cut;
-  cut.type = rapid ? MotionType::rapid : MotionType::linear;
-  cut.start = stop;
-  cut.end = blocks_[target].motion.start;
-  cut.feed = blocks_[target].motion.feed > 0 ? blocks_[target].motion.feed : interrupted_feed;
-  PathSegment segment(cut, machine_);
   next_backward_ = target;
-  if (segment.length() > 0) {
-    look_ahead_.push(target, std::move(segment), blocks_[target].slope);
-    short_cut_target_ = target;
-    short_cut_rapid_ = rapid;
-    hli_.delete_distance_to_go_active_r = true;
-  }
-  refill_look_ahead();
-  if (look_ahead_.empty()) return;
-  begin_front({}, t);
-  replan_ = false;
+  run_short_cut(stop, target, blocks_[target].motion.start, t);
 }
 
 }  // namespace hil::cnc

@@ -212,23 +212,12 @@ void Channel::start_short_cut(double t) {
     return;
   }
   ddtg_requested_ = false;
-  const LookAheadBlock& front = look_ahead_.front();
-  const double length = front.segment.length();
-  const double s = std::clamp(path_state_at(t).p, 0.0, length);
-  const bool on_short_cut = hli_.delete_distance_to_go_active_r && front.block_index == short_cut_target_;
-  const bool rapid = on_short_cut ? short_cut_rapid_ : blocks_[front.block_index].motion.type == MotionType::rapid;
-  const double interrupted_feed = blocks_[front.block_index].motion.feed;
-  std::vector<double> stop(setpoints_.size());
-  for (size_t i = 0; i < stop.size(); ++i) stop[i] = setpoints_[i].position;
-  if (dps_counting_ && length > 0) dps_before_front_ += front.segment.covered_distance() * s / length;
   // The rest of the front block is dropped; what lies between it and the
   // target (non-motion blocks) runs at the stop position, before the short cut.
+  const StopPoint stop = leave_front(t);
   const uint32_t mask = static_cast<uint32_t>(hli_.delete_distance_to_go_activation.state_r);
-  const ShortCutTarget found = short_cut_target(blocks_, front.block_index, mask);
-  next_to_run_ = std::max(next_to_run_, front.block_index + 1);  // after backward motion: ran already
-  look_ahead_.clear();
-  hli_.delete_distance_to_go_active_r = false;
-  update_velocity_factor();
+  const ShortCutTarget found = short_cut_target(blocks_, stop.block, mask);
+  next_to_run_ = std::max(next_to_run_, stop.block + 1);  // after backward motion: ran already
   if (found.not_skippable) {  // DDTG-8: the path stays where it stopped
     const Block& command = blocks_[*found.not_skippable];
     Event refused = event_at_block(Severity::error, "delete distance to go in line " +
@@ -265,29 +254,56 @@ void Channel::start_short_cut(double t) {
     return;
   }
   const size_t target = *found.target;
-  Motion cut;
-  cut.type = rapid ? MotionType::rapid : MotionType::linear;  // DDTG-2: linear, G00 if the interrupted block was
-  cut.start = stop;
-  cut.end = blocks_[target].motion.end;
-  cut.feed = blocks_[target].motion.feed > 0 ? blocks_[target].motion.feed : interrupted_feed;
-  PathSegment segment(cut, machine_);
   next_to_look_ahead_ = target + 1;
+  run_short_cut(stop, target, blocks_[target].motion.end, t);
+}
+
+Channel::StopPoint Channel::leave_front(double t) {
+  const LookAheadBlock& front = look_ahead_.front();
+  StopPoint stop;
+  stop.block = front.block_index;
+  stop.front_length = front.segment.length();
+  stop.s = std::clamp(path_state_at(t).p, 0.0, stop.front_length);
+  stop.rapid = on_short_cut() ? short_cut_rapid_ : blocks_[stop.block].motion.type == MotionType::rapid;
+  stop.position = setpoint_positions();
+  if (dps_counting_ && stop.front_length > 0)
+    dps_before_front_ += direction_sign() * front.segment.covered_distance() * stop.s / stop.front_length;
+  look_ahead_.clear();
+  hli_.delete_distance_to_go_active_r = false;
+  update_velocity_factor();
+  return stop;
+}
+
+void Channel::run_short_cut(const StopPoint& stop, size_t target, const std::vector<double>& end, double t) {
+  Motion cut;
+  cut.type = stop.rapid ? MotionType::rapid : MotionType::linear;  // DDTG-2: linear, G00 if the interrupted block was
+  cut.start = stop.position;
+  cut.end = end;
+  cut.feed = blocks_[target].motion.feed > 0 ? blocks_[target].motion.feed : blocks_[stop.block].motion.feed;
+  PathSegment segment(cut, machine_);
   if (segment.length() > 0) {
     look_ahead_.push(target, std::move(segment), blocks_[target].slope);
     short_cut_target_ = target;
-    short_cut_rapid_ = rapid;
+    short_cut_rapid_ = stop.rapid;
     hli_.delete_distance_to_go_active_r = true;
   }
+  go_on_from_standstill(t);
+}
+
+void Channel::go_on_from_standstill(double t) {
   refill_look_ahead();
-  if (look_ahead_.empty()) return;
-  begin_front({}, t);
+  if (!look_ahead_.empty()) begin_front({}, t);
   replan_ = false;
 }
 
+std::vector<double> Channel::setpoint_positions() const {
+  std::vector<double> positions(setpoints_.size());
+  for (size_t i = 0; i < positions.size(); ++i) positions[i] = setpoints_[i].position;
+  return positions;
+}
+
 void Channel::start_program() {
-  std::vector<double> start(setpoints_.size());
-  for (size_t i = 0; i < start.size(); ++i) start[i] = setpoints_[i].position;
-  DecodedProgram program = decode_program(nc_program_, machine_, start);
+  DecodedProgram program = decode_program(nc_program_, machine_, setpoint_positions());
   if (program.error) {
     decode_failed_ = true;
     raise(*program.error);  // reported at once; the blocks before it still run
@@ -297,9 +313,7 @@ void Channel::start_program() {
   for (Event& warning : warnings) raise(std::move(warning));
   start_cycle_ = cycle_;
   hli_.channel_state = ChannelState::active;
-  refill_look_ahead();
-  if (!look_ahead_.empty()) begin_front({}, 0);
-  replan_ = false;
+  go_on_from_standstill(0);
   interpolate(0);
 }
 

@@ -55,6 +55,23 @@ class Channel {
   // the next motion block by a linear short cut to the latter's end point
   // (DDTG-5: everything up to the first valid end marker).
   void start_short_cut(double t);
+  // Where the path stands in its front block, for a short cut or a turn.
+  struct StopPoint {
+    size_t block = 0;           // of the front segment
+    double front_length = 0;    // of the front segment
+    double s = 0;               // path position on it
+    bool rapid = false;         // a short cut from here runs in G00 (DDTG-2)
+    std::vector<double> position;
+  };
+  // Counts the front segment's travelled part into dist_prog_start (with
+  // the direction's sign) and empties the look-ahead.
+  StopPoint leave_front(double t);
+  // A linear short cut from `stop` to `end`, the block `target`'s end
+  // point (or start point, backward); then the look-ahead is refilled.
+  void run_short_cut(const StopPoint& stop, size_t target, const std::vector<double>& end, double t);
+  // Refills the look-ahead and plans from standstill at t.
+  void go_on_from_standstill(double t);
+  std::vector<double> setpoint_positions() const;
   // KRN-5 (backward_motion.cpp): the path stands still; go on along the
   // stored contour the other way. The short cut backward goes to the start
   // point of the block before the interrupted one (DDTG-10).
