@@ -1,6 +1,22 @@
 #include "messages.hpp"
 
 namespace hil::lcm_support {
+namespace {
+
+// A control unit's fields between the HLI structs and the LCM types, either way.
+template <typename To, typename From>
+void copy_state(To& to, const From& from) {
+  to.request_r = from.request_r;
+  to.state_r = from.state_r;
+}
+
+template <typename To, typename From>
+void copy_control(To& to, const From& from) {
+  to.command_w = from.command_w;
+  to.enable_w = from.enable_w;
+}
+
+}  // namespace
 
 hil::event_t to_message(const Event& e, int64_t cycle, int64_t utime, const std::string& source) {
   hil::event_t m;
@@ -38,21 +54,15 @@ hil::hli_state_t to_message(const HliState& s, int64_t utime) {
   m.n_axes = static_cast<int16_t>(s.axis_name.size());
   m.axis_name = s.axis_name;
   m.axis_position_r = s.axis_position_r;
-  m.program_start.request_r = s.program_start.request_r;
-  m.program_start.state_r = s.program_start.state_r;
-  m.feedhold.request_r = s.feedhold.request_r;
-  m.feedhold.state_r = s.feedhold.state_r;
-  m.override.request_r = s.override.request_r;
-  m.override.state_r = s.override.state_r;
-  m.delete_distance_to_go.request_r = s.delete_distance_to_go.request_r;
-  m.delete_distance_to_go.state_r = s.delete_distance_to_go.state_r;
-  m.delete_distance_to_go_activation.request_r = s.delete_distance_to_go_activation.request_r;
-  m.delete_distance_to_go_activation.state_r = s.delete_distance_to_go_activation.state_r;
+  copy_state(m.program_start, s.program_start);
+  copy_state(m.feedhold, s.feedhold);
+  copy_state(m.override, s.override);
+  copy_state(m.delete_distance_to_go, s.delete_distance_to_go);
+  copy_state(m.delete_distance_to_go_activation, s.delete_distance_to_go_activation);
   m.delete_distance_to_go_active_r = s.delete_distance_to_go_active_r;
   m.m_function_request_r = s.m_function_request_r;
   m.m_function_nr_r = s.m_function_nr_r;
-  m.backward_motion.request_r = s.backward_motion.request_r;
-  m.backward_motion.state_r = s.backward_motion.state_r;
+  copy_state(m.backward_motion, s.backward_motion);
   return m;
 }
 
@@ -68,21 +78,15 @@ HliState from_message(const hil::hli_state_t& m) {
   s.last_error_id = m.last_error_id;
   s.axis_name = m.axis_name;
   s.axis_position_r = m.axis_position_r;
-  s.program_start.request_r = m.program_start.request_r;
-  s.program_start.state_r = m.program_start.state_r;
-  s.feedhold.request_r = m.feedhold.request_r;
-  s.feedhold.state_r = m.feedhold.state_r;
-  s.override.request_r = m.override.request_r;
-  s.override.state_r = m.override.state_r;
-  s.delete_distance_to_go.request_r = m.delete_distance_to_go.request_r;
-  s.delete_distance_to_go.state_r = m.delete_distance_to_go.state_r;
-  s.delete_distance_to_go_activation.request_r = m.delete_distance_to_go_activation.request_r;
-  s.delete_distance_to_go_activation.state_r = m.delete_distance_to_go_activation.state_r;
+  copy_state(s.program_start, m.program_start);
+  copy_state(s.feedhold, m.feedhold);
+  copy_state(s.override, m.override);
+  copy_state(s.delete_distance_to_go, m.delete_distance_to_go);
+  copy_state(s.delete_distance_to_go_activation, m.delete_distance_to_go_activation);
   s.delete_distance_to_go_active_r = m.delete_distance_to_go_active_r;
   s.m_function_request_r = m.m_function_request_r;
   s.m_function_nr_r = m.m_function_nr_r;
-  s.backward_motion.request_r = m.backward_motion.request_r;
-  s.backward_motion.state_r = m.backward_motion.state_r;
+  copy_state(s.backward_motion, m.backward_motion);
   return s;
 }
 
@@ -90,40 +94,26 @@ hil::hli_control_t to_message(const HliControl& c, int64_t utime) {
   hil::hli_control_t m;
   m.utime = utime;
   m.cycle = c.cycle;
-  m.program_start.command_w = c.program_start.command_w;
-  m.program_start.enable_w = c.program_start.enable_w;
-  m.feedhold.command_w = c.feedhold.command_w;
-  m.feedhold.enable_w = c.feedhold.enable_w;
-  m.override.command_w = c.override.command_w;
-  m.override.enable_w = c.override.enable_w;
-  m.delete_distance_to_go.command_w = c.delete_distance_to_go.command_w;
-  m.delete_distance_to_go.enable_w = c.delete_distance_to_go.enable_w;
-  m.delete_distance_to_go_activation.command_w = c.delete_distance_to_go_activation.command_w;
-  m.delete_distance_to_go_activation.enable_w = c.delete_distance_to_go_activation.enable_w;
-  m.m_function_ack.command_w = c.m_function_ack.command_w;
-  m.m_function_ack.enable_w = c.m_function_ack.enable_w;
-  m.backward_motion.command_w = c.backward_motion.command_w;
-  m.backward_motion.enable_w = c.backward_motion.enable_w;
+  copy_control(m.program_start, c.program_start);
+  copy_control(m.feedhold, c.feedhold);
+  copy_control(m.override, c.override);
+  copy_control(m.delete_distance_to_go, c.delete_distance_to_go);
+  copy_control(m.delete_distance_to_go_activation, c.delete_distance_to_go_activation);
+  copy_control(m.m_function_ack, c.m_function_ack);
+  copy_control(m.backward_motion, c.backward_motion);
   return m;
 }
 
 HliControl from_message(const hil::hli_control_t& m) {
   HliControl c;
   c.cycle = m.cycle;
-  c.program_start.command_w = m.program_start.command_w;
-  c.program_start.enable_w = m.program_start.enable_w;
-  c.feedhold.command_w = m.feedhold.command_w;
-  c.feedhold.enable_w = m.feedhold.enable_w;
-  c.override.command_w = m.override.command_w;
-  c.override.enable_w = m.override.enable_w;
-  c.delete_distance_to_go.command_w = m.delete_distance_to_go.command_w;
-  c.delete_distance_to_go.enable_w = m.delete_distance_to_go.enable_w;
-  c.delete_distance_to_go_activation.command_w = m.delete_distance_to_go_activation.command_w;
-  c.delete_distance_to_go_activation.enable_w = m.delete_distance_to_go_activation.enable_w;
-  c.m_function_ack.command_w = m.m_function_ack.command_w;
-  c.m_function_ack.enable_w = m.m_function_ack.enable_w;
-  c.backward_motion.command_w = m.backward_motion.command_w;
-  c.backward_motion.enable_w = m.backward_motion.enable_w;
+  copy_control(c.program_start, m.program_start);
+  copy_control(c.feedhold, m.feedhold);
+  copy_control(c.override, m.override);
+  copy_control(c.delete_distance_to_go, m.delete_distance_to_go);
+  copy_control(c.delete_distance_to_go_activation, m.delete_distance_to_go_activation);
+  copy_control(c.m_function_ack, m.m_function_ack);
+  copy_control(c.backward_motion, m.backward_motion);
   return c;
 }
 
