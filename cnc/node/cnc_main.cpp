@@ -1,6 +1,7 @@
-// The `cnc` node (RIG-1): the clock master. Each cycle it runs the channel,
-// publishes setpoints and the HLI state, and in lock-step waits for every
-// axis and the PLC to answer that cycle before the next (RIG-6).
+// The `cnc` node (RIG-1): the clock master. It wires LCM to the cycle loop
+// (cnc/cycle): each cycle's setpoints and HLI state go out, and in
+// lock-step it waits for every axis and the PLC to answer that cycle
+// before the next (RIG-6).
 #include <hil/axis_state_t.hpp>
 #include <hil/participant_t.hpp>
 #include <hil/run_manifest_t.hpp>
@@ -13,13 +14,13 @@
 #include <set>
 
 #include "channel.hpp"
+#include "cycle_loop.hpp"
 #include "channels.hpp"
 #include "cycle_messages.hpp"
 #include "messages.hpp"
 #include "node_options.hpp"
 #include "participant.hpp"
 #include "rerun.hpp"
-#include "run_end.hpp"
 #include "scenario.hpp"
 
 namespace {
@@ -36,12 +37,15 @@ struct Answers {
   std::set<std::string> ready;
 };
 
-class CncNode {
+// RIG-6 lock-step over LCM: the CNC is the clock master; each cycle's
+// output is published, and the answers to it are every axis' and the PLC's
+// message for that cycle, waited for (the watchdog ends the run).
+class CncNode : public cnc::CyclePolicy {
  public:
   CncNode(const Scenario& scenario, const std::string& url, std::vector<std::string> participants,
           std::chrono::milliseconds answer_timeout)
       : scenario_(scenario), machine_(scenario.machine), lcm_(url), participants_(std::move(participants)),
-        answer_timeout_(answer_timeout), channel_(scenario.machine, scenario.nc_program) {
+        answer_timeout_(answer_timeout) {
     lcm_support::require_good(lcm_, url);
     answers_.axis_cycle.assign(machine_.axes.size(), -1);
     answers_.axis_errors.assign(machine_.axes.size(), 0);
@@ -75,38 +79,37 @@ class CncNode {
   int run() {
     if (!wait_for_participants()) return 3;
     publish_manifest();
-    const double dt = machine_.cycle_time_s();
-    cnc_node::RunEnd run_end(scenario_);
-    int64_t k = 0;
-    int status = 0;
-    HliControl control;  // the PLC's answer to the previous cycle
-    for (;; ++k) {
-      channel_.step(k, control);
-      const std::vector<Event> events = channel_.take_events();
-      for (const Event& e : events) log_event(e);
-      for (const auto& m : cnc_node::cycle_messages(channel_, machine_, events, k))
-        lcm_.publish(m.channel, m.bytes.data(), static_cast<unsigned>(m.bytes.size()));
-      if (!wait_for_answers(k)) {
-        status = 3;
-        break;
-      }
-      control = answers_.control;
-      cnc_node::apply_drive_errors(channel_, machine_, answers_.axis_errors);
-      if (run_end.settled(channel_, k)) break;
-      if (run_end.timed_out(k)) {
-        publish_event(run_end.timeout_event(), k);
-        break;
-      }
-    }
+    cnc::Channel channel(scenario_.machine, scenario_.nc_program);
+    const cnc::CycleLoopResult result = cnc::run_cycles(channel, scenario_, *this);
+    const int64_t k = result.last_cycle;
     hil::participant_t end;
     end.utime = k * machine_.cycle_time_us;
     end.cycle = k;
     end.name = "cnc";
     end.phase = hil::participant_t::PHASE_RUN_END;
     lcm_.publish(channels::participant, &end);
-    spdlog::info("run ended after cycle {} ({:.3f} s simulated), channel {}", k, k * dt,
-                 to_string(channel_.hli().channel_state));
-    return status;
+    spdlog::info("run ended after cycle {} ({:.3f} s simulated), channel {}", k, k * machine_.cycle_time_s(),
+                 to_string(channel.hli().channel_state));
+    return result.outcome == cnc::RunOutcome::answers_missing ? 3 : 0;
+  }
+
+  bool publish(int64_t k, const cnc::Channel& channel, const std::vector<Event>& events) override {
+    for (const Event& e : events) log_event(e);
+    for (const auto& m : cnc_node::cycle_messages(channel, machine_, events, k))
+      lcm_.publish(m.channel, m.bytes.data(), static_cast<unsigned>(m.bytes.size()));
+    return true;
+  }
+
+  bool publish_event(int64_t k, const Event& e) override {
+    log_event(e);
+    const auto m = cnc_node::event_message(e, machine_, k);
+    lcm_.publish(m.channel, m.bytes.data(), static_cast<unsigned>(m.bytes.size()));
+    return true;
+  }
+
+  std::optional<cnc::CycleAnswers> answers(int64_t k) override {
+    if (!wait_for_answers(k)) return std::nullopt;
+    return cnc::CycleAnswers{answers_.control, cnc_node::drive_errors(machine_, answers_.axis_errors)};
   }
 
  private:
@@ -146,12 +149,6 @@ class CncNode {
     spdlog::log(e.severity == Severity::error ? spdlog::level::err : spdlog::level::warn, "{}", describe(e));
   }
 
-  void publish_event(const Event& e, int64_t k) {
-    log_event(e);
-    const auto m = cnc_node::event_message(e, machine_, k);
-    lcm_.publish(m.channel, m.bytes.data(), static_cast<unsigned>(m.bytes.size()));
-  }
-
   bool wait_for_answers(int64_t k) {
     const auto give_up = clock_type::now() + answer_timeout_;
     for (;;) {
@@ -167,7 +164,7 @@ class CncNode {
     Event e;
     e.message = "lock-step broken: no answer to cycle " + std::to_string(k) + " within " +
                 std::to_string(answer_timeout_.count()) + " ms from" + silent;
-    publish_event(e, k);
+    publish_event(k, e);
     return false;
   }
 
@@ -184,7 +181,6 @@ class CncNode {
   lcm::LCM lcm_;
   std::vector<std::string> participants_;
   std::chrono::milliseconds answer_timeout_;
-  cnc::Channel channel_;
   Answers answers_;
 };
 

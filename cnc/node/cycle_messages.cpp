@@ -17,6 +17,13 @@ EncodedMessage encoded(const std::string& channel, const T& message) {
 
 }  // namespace
 
+std::vector<cnc::DriveError> drive_errors(const MachineConfig& machine, const std::vector<int32_t>& errors) {
+  std::vector<cnc::DriveError> out;
+  for (size_t i = 0; i < errors.size() && i < machine.axes.size(); ++i)
+    if (errors[i]) out.push_back({machine.axes[i].name, lcm_support::monitor_names(errors[i])});
+  return out;
+}
+
 EncodedMessage event_message(const Event& event, const MachineConfig& machine, int64_t cycle) {
   return encoded(channels::event, lcm_support::to_message(event, cycle, cycle * machine.cycle_time_us, "cnc"));
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "channel.hpp"
+#include "cycle_loop.hpp"
 #include "machine_config.hpp"
 
 namespace hil::cnc_node {
@@ -18,6 +19,10 @@ struct EncodedMessage {
 
 std::vector<EncodedMessage> cycle_messages(const cnc::Channel& channel, const MachineConfig& machine,
                                            const std::vector<Event>& events, int64_t cycle);
+
+// The axes' monitoring error bits answering a cycle (axis_state_t.errors,
+// by machine axis) as the drive errors the channel takes (RIG-3).
+std::vector<cnc::DriveError> drive_errors(const MachineConfig& machine, const std::vector<int32_t>& errors);
 
 // An event of the CNC, encoded for HIL_EVENT.
 EncodedMessage event_message(const Event& event, const MachineConfig& machine, int64_t cycle);

@@ -17,7 +17,7 @@
 #include "channels.hpp"
 #include "cycle_messages.hpp"
 #include "messages.hpp"
-#include "run_end.hpp"
+#include "cycle_loop.hpp"
 #include "scenario.hpp"
 
 namespace hil::cnc_node {
@@ -93,55 +93,73 @@ std::string describe_difference(const std::string& channel, const std::string& r
   return o.str();
 }
 
-}  // namespace
+// RIG-7 recorded input: the answers to each cycle come from the recording,
+// and what this build publishes must match what the recorded CNC did, byte
+// for byte.
+class RecordedInput : public cnc::CyclePolicy {
+ public:
+  RecordedInput(Recording recording, std::ostream& out) : rec_(std::move(recording)), out_(out) {}
 
-int rerun(const std::string& log_path, std::ostream& out) {
-  Recording rec = read_recording(log_path);
-  const Scenario& scenario = *rec.scenario;
-  const MachineConfig& machine = scenario.machine;
-  cnc::Channel channel(machine, scenario.nc_program);
-  RunEnd run_end(scenario);
-  int64_t compared = 0, k = 0;
-  HliControl control;
-  // The same loop as the live node (cnc_main.cpp), with the recording in
-  // place of the PLC and the drives.
-  auto matches = [&](const EncodedMessage& m) {
-    auto& queue = rec.outputs[m.channel];
+  bool publish(int64_t k, const cnc::Channel& channel, const std::vector<Event>& events) override {
+    for (const auto& m : cycle_messages(channel, machine(), events, k))
+      if (!matches(k, m)) return false;
+    return true;
+  }
+  bool publish_event(int64_t k, const Event& event) override { return matches(k, event_message(event, machine(), k)); }
+  std::optional<cnc::CycleAnswers> answers(int64_t k) override {
+    cnc::CycleAnswers answers;
+    if (const auto c = rec_.controls.find(k); c != rec_.controls.end()) answers.control = c->second;
+    if (const auto e = rec_.drive_errors.find(k); e != rec_.drive_errors.end())
+      answers.drive_errors = drive_errors(machine(), e->second);
+    return answers;
+  }
+
+  const Scenario& scenario() const { return *rec_.scenario; }
+  int64_t compared() const { return compared_; }
+  // False (and says so) if the recorded CNC published more than this build.
+  bool nothing_left(int64_t k) const {
+    for (const auto& [name, queue] : rec_.outputs)
+      if (!queue.empty()) {
+        out_ << "differs: this build ended after cycle " << k << ", the recorded run has " << queue.size()
+             << " more message(s) on " << name << '\n';
+        return false;
+      }
+    return true;
+  }
+
+ private:
+  const MachineConfig& machine() const { return rec_.scenario->machine; }
+  bool matches(int64_t k, const EncodedMessage& m) {
+    auto& queue = rec_.outputs[m.channel];
     const std::string now(m.bytes.begin(), m.bytes.end());
     if (queue.empty()) {
-      out << "differs at cycle " << k << ": " << m.channel << ": this build publishes a message the recorded run has not\n";
+      out_ << "differs at cycle " << k << ": " << m.channel << ": this build publishes a message the recorded run has not\n";
       return false;
     }
     if (queue.front() != now) {
-      out << "differs at cycle " << k << ": " << m.channel << ": "
-          << describe_difference(m.channel, queue.front(), now) << '\n';
+      out_ << "differs at cycle " << k << ": " << m.channel << ": " << describe_difference(m.channel, queue.front(), now)
+           << '\n';
       return false;
     }
     queue.pop_front();
-    ++compared;
+    ++compared_;
     return true;
-  };
-  for (;; ++k) {
-    channel.step(k, control);
-    for (const auto& m : cycle_messages(channel, machine, channel.take_events(), k))
-      if (!matches(m)) return 1;
-    // The answers to cycle k, taken where the live node takes them.
-    if (const auto c = rec.controls.find(k); c != rec.controls.end()) control = c->second;
-    if (const auto e = rec.drive_errors.find(k); e != rec.drive_errors.end())
-      apply_drive_errors(channel, machine, e->second);
-    if (run_end.settled(channel, k)) break;
-    if (run_end.timed_out(k)) {
-      if (!matches(event_message(run_end.timeout_event(), machine, k))) return 1;
-      break;
-    }
   }
-  for (const auto& [name, queue] : rec.outputs)
-    if (!queue.empty()) {
-      out << "differs: this build ended after cycle " << k << ", the recorded run has " << queue.size()
-          << " more message(s) on " << name << '\n';
-      return 1;
-    }
-  out << "identical: " << k + 1 << " cycles, " << compared << " messages of the CNC (setpoints, HLI state, events)\n";
+
+  Recording rec_;
+  std::ostream& out_;
+  int64_t compared_ = 0;
+};
+
+}  // namespace
+
+int rerun(const std::string& log_path, std::ostream& out) {
+  RecordedInput input(read_recording(log_path), out);
+  cnc::Channel channel(input.scenario().machine, input.scenario().nc_program);
+  const cnc::CycleLoopResult result = cnc::run_cycles(channel, input.scenario(), input);
+  if (result.outcome == cnc::RunOutcome::publish_refused || !input.nothing_left(result.last_cycle)) return 1;
+  out << "identical: " << result.last_cycle + 1 << " cycles, " << input.compared()
+      << " messages of the CNC (setpoints, HLI state, events)\n";
   return 0;
 }
 

@@ -1,0 +1,18 @@
+#include "path_hold.hpp"
+
+#include "hli.hpp"
+
+namespace hil::cnc {
+
+double PathHold::velocity_factor(int32_t override_value) const {
+  return holds() ? 0.0 : override_value / static_cast<double>(override_full);
+}
+
+int32_t PathHold::stop_conditions() const {
+  int32_t bits = 0;
+  if (holds(HoldReason::feedhold)) bits |= stop_condition::feedhold;
+  if (holds(HoldReason::channel_error)) bits |= stop_condition::channel_error;
+  return bits;
+}
+
+}  // namespace hil::cnc

@@ -1,0 +1,211 @@
+#include "path_interpolator.hpp"
+
+#include <algorithm>
+
+#include "motion_parts.hpp"
+#include "position_profile.hpp"
+
+namespace hil::cnc {
+namespace {
+
+// A rest shorter than this is not moved (10 nm): a shorter arc could not be
+// told from a full circle.
+constexpr double shortest_rest_mm = 1e-5;
+
+}  // namespace
+
+PathInterpolator::PathInterpolator(const MachineConfig& machine, PathObserver& observer)
+    : machine_(machine), observer_(observer), look_ahead_(machine), setpoints_(machine.axes.size()) {}
+
+std::vector<double> PathInterpolator::setpoint_positions() const {
+  std::vector<double> positions(setpoints_.size());
+  for (size_t i = 0; i < positions.size(); ++i) positions[i] = setpoints_[i].position;
+  return positions;
+}
+
+void PathInterpolator::set_velocity_factor(double factor) {
+  look_ahead_.set_velocity_factor(factor);
+  replan_ = true;
+}
+
+StopPoint PathInterpolator::leave_front(double t) {
+  const LookAheadBlock& front = look_ahead_.front();
+  StopPoint stop;
+  stop.block = front.block_index;
+  stop.front_length = front.segment.length();
+  stop.s = std::clamp(path_state_at(t).p, 0.0, stop.front_length);
+  stop.position = setpoint_positions();
+  if (stop.front_length > 0)
+    observer_.travelled(direction_sign() * front.segment.covered_distance() * stop.s / stop.front_length);
+  look_ahead_.clear();
+  return stop;
+}
+
+bool PathInterpolator::push_short_cut(size_t target, const Motion& cut) {
+  PathSegment segment(cut, machine_);
+  if (!(segment.length() > 0)) return false;
+  look_ahead_.push(target, std::move(segment), blocks_[target].slope);
+  return true;
+}
+
+void PathInterpolator::go_on_from_standstill(double t) {
+  refill();
+  if (!look_ahead_.empty()) begin_front({}, t);
+  replan_ = false;
+}
+
+bool PathInterpolator::turn(double t, size_t stored_blocks) {
+  if (look_ahead_.empty()) {
+    // Standing where the stored contour begins: forward from that block's
+    // start. (Forward with nothing left to move, the program is about to
+    // end: it cannot turn there.)
+    if (direction_ == TravelDirection::forward) return false;
+    direction_ = TravelDirection::forward;
+    cursors_.next_to_look_ahead = cursors_.last_finished;
+    return true;
+  }
+  const StopPoint stop = leave_front(t);
+  const size_t k = stop.block;
+  direction_ = direction_ == TravelDirection::forward ? TravelDirection::backward : TravelDirection::forward;
+  const bool backward = direction_ == TravelDirection::backward;
+  // What is left of block k the new way: back to its start, or on to its end.
+  const Motion motion = backward ? reversed(motion_until(blocks_[k].motion, stop.position))
+                                 : motion_from(blocks_[k].motion, stop.position);
+  if (backward) {
+    size_t i = cursors_.begun, counted = 0;
+    while (i > 0 && counted < stored_blocks)
+      if (blocks_[--i].has_motion) ++counted;
+    cursors_.lowest_stored = i;
+    cursors_.next_backward = k;
+  } else {
+    cursors_.next_to_look_ahead = k + 1;
+  }
+  // The front segment ends where block k ends in the old direction, so the
+  // way back over block k is what it had covered before the front and on it.
+  const double back_over_k = PathSegment(blocks_[k].motion, machine_).length() - stop.front_length + stop.s;
+  if (back_over_k > shortest_rest_mm) look_ahead_.push(k, PathSegment(motion, machine_), blocks_[k].slope);
+  cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
+  refill();
+  return true;
+}
+
+void PathInterpolator::refill() {
+  if (direction_ == TravelDirection::backward) refill_backward();
+  else refill_forward();
+}
+
+void PathInterpolator::refill_forward() {
+  size_t& next = cursors_.next_to_look_ahead;
+  for (; !look_ahead_.full() && next < blocks_.size(); ++next) {
+    const Block& block = blocks_[next];
+    if (!block.has_motion) continue;
+    // M functions, a dwell or a channel initialisation on its line or since
+    // the last motion block: the path stands still where it starts.
+    bool stop_before = false;
+    for (size_t i = next + 1; i-- > 0;) {
+      if (i < next && blocks_[i].has_motion) break;
+      stop_before = stop_before || blocks_[i].stops_path();
+    }
+    if (next < cursors_.begun) stop_before = false;  // forward again after backward motion: ran already
+    look_ahead_.push(next, PathSegment(block.motion, machine_), block.slope, stop_before);
+  }
+}
+
+void PathInterpolator::refill_backward() {
+  while (!look_ahead_.full() && cursors_.next_backward > cursors_.lowest_stored) {
+    const size_t i = --cursors_.next_backward;
+    if (!blocks_[i].has_motion) continue;
+    look_ahead_.push(i, PathSegment(reversed(blocks_[i].motion), machine_), blocks_[i].slope);
+  }
+}
+
+void PathInterpolator::begin_front(const MotionState& state, double t0) {
+  const size_t index = look_ahead_.front().block_index;
+  run_blocks_without_motion(index);
+  const bool first_time = direction_ == TravelDirection::forward && index >= cursors_.begun;
+  observer_.reach_block(blocks_[index], first_time);  // its M functions go out before its motion (MVS_SVS)
+  if (first_time) cursors_.begun = index + 1;
+  plan(state, t0);
+}
+
+// Replanning from a state on the plan continues it (the planner is
+// time-optimal, so its tail is too); it is done at every block transition,
+// where the look-ahead has seen one block more, and when the velocity
+// factor changes.
+void PathInterpolator::plan(const MotionState& state, double t0) {
+  const Stretch st = look_ahead_.stretch(state.v);
+  plan_ = block_profile(state, st.length, st.v_end, st.lim, st.slope);
+  plan_start_ = t0;
+}
+
+void PathInterpolator::finish_front() {
+  const LookAheadBlock& front = look_ahead_.front();
+  observer_.travelled(direction_sign() * front.segment.covered_distance());
+  observer_.finish_block(front.block_index);
+  if (direction_ == TravelDirection::forward)
+    cursors_.next_to_run = std::max(cursors_.next_to_run, front.block_index + 1);
+  cursors_.last_finished = front.block_index;
+  look_ahead_.pop_front();
+  refill();
+}
+
+// #DISTANCE PROG START and M30 act when the interpolator reaches them.
+void PathInterpolator::run_blocks_without_motion(size_t up_to) {
+  for (; cursors_.next_to_run < up_to; ++cursors_.next_to_run) observer_.reach_block(blocks_[cursors_.next_to_run], true);
+}
+
+PathProgress PathInterpolator::interpolate(double t) {
+  if (!look_ahead_.empty() && replan_) plan(path_state_at(t), t);
+  replan_ = false;
+  MotionState path = path_state_at(t);
+  bool reached_contour_start = false;
+  // Pass every block the path has left by t; a plan that ends short of the
+  // block end (feed hold, override 0) waits there.
+  while (!look_ahead_.empty()) {
+    const double length = look_ahead_.front().segment.length();
+    const bool plan_ended = t - plan_start_ >= plan_.duration();
+    if (path.p < length && !(plan_ended && path.p >= length - 1e-9 * (1 + length))) break;
+    const std::vector<double> end_point = look_ahead_.front().segment.end();
+    finish_front();
+    if (look_ahead_.empty()) {
+      // Leave the last block exactly on its programmed end point.
+      for (size_t i = 0; i < setpoints_.size(); ++i) setpoints_[i] = {end_point[i], 0, 0};
+      reached_contour_start = direction_ == TravelDirection::backward;
+      break;
+    }
+    // Go on from where the path left the block: at t, or where a plan that
+    // ended on the block end (a limiting transition) ended.
+    double t_from = t;
+    if (plan_ended) {
+      t_from = plan_start_ + plan_.duration();
+      path = plan_.end();
+    }
+    path.p -= length;
+    begin_front(path, t_from);
+    path = path_state_at(t);
+  }
+  if (look_ahead_.empty()) {
+    path_velocity_ = 0;
+    front_covered_ = 0;
+    if (direction_ == TravelDirection::backward)
+      return reached_contour_start ? PathProgress::reached_contour_start : PathProgress::at_contour_start;
+    // Every block decoded correctly has run.
+    run_blocks_without_motion(blocks_.size());
+    return PathProgress::all_blocks_run;
+  }
+  if (t - plan_start_ >= plan_.duration()) path.v = path.a = 0;  // held short of the block end
+  output(path);
+  return PathProgress::moving;
+}
+
+void PathInterpolator::output(const MotionState& path) {
+  const PathSegment& seg = look_ahead_.front().segment;
+  const double s = std::clamp(path.p, 0.0, seg.length());
+  const std::vector<double> p = seg.position(s), d1 = seg.tangent(s), d2 = seg.curvature(s);
+  for (size_t i = 0; i < setpoints_.size(); ++i)
+    setpoints_[i] = {p[i], d1[i] * path.v, d1[i] * path.a + d2[i] * path.v * path.v};
+  front_covered_ = direction_sign() * (seg.covered_distance() * s / seg.length());
+  path_velocity_ = path.v;
+}
+
+}  // namespace hil::cnc

@@ -1,0 +1,128 @@
+#pragma once
+// The interpolator (KRN-3): moves the path along the decoded program at the
+// cycle time, on the plan of the look-ahead, in the travel direction
+// (KRN-5). The channel's functions act on it through a narrow interface:
+// where the path stands, leave the front block, go on from standstill,
+// turn, the velocity factor of the path's hold.
+#include <cstddef>
+#include <vector>
+
+#include "block.hpp"
+#include "block_cursors.hpp"
+#include "look_ahead.hpp"
+#include "machine_config.hpp"
+#include "motion_profile.hpp"
+
+namespace hil::cnc {
+
+struct AxisSetpoint {
+  double position = 0;      // mm
+  double velocity = 0;      // mm/s
+  double acceleration = 0;  // mm/s^2
+};
+
+enum class TravelDirection { forward, backward };
+
+// What the interpolator tells the channel while it moves.
+class PathObserver {
+ public:
+  // The interpolator reached `block`: one without motion, or a motion block
+  // now in front. run_commands: its commands (M functions, dwell, #DISTANCE
+  // PROG START) run now; they run once, and never backward.
+  virtual void reach_block(const Block& block, bool run_commands) = 0;
+  // The path left a block, or part of it: what that adds to the distance
+  // from program start, signed by the direction (DPS-1).
+  virtual void travelled(double covered_distance) = 0;
+  // The path finished the block at `index` of the program.
+  virtual void finish_block(size_t index) = 0;
+
+ protected:
+  ~PathObserver() = default;
+};
+
+// Where the path stood in its front block when it left it.
+struct StopPoint {
+  size_t block = 0;         // of the front segment
+  double front_length = 0;  // of the front segment
+  double s = 0;             // path position on it
+  std::vector<double> position;
+};
+
+enum class PathProgress {
+  moving,                 // on a block (possibly held short of its end)
+  reached_contour_start,  // backward: left the first stored block this cycle
+  at_contour_start,       // backward: stands where the stored contour begins
+  all_blocks_run,         // forward: every decoded block has run
+};
+
+class PathInterpolator {
+ public:
+  PathInterpolator(const MachineConfig& machine, PathObserver& observer);
+  PathInterpolator(const PathInterpolator&) = delete;  // the look-ahead refers to the machine
+  PathInterpolator& operator=(const PathInterpolator&) = delete;
+
+  void load(std::vector<Block> blocks) { blocks_ = std::move(blocks); }
+  const std::vector<Block>& blocks() const { return blocks_; }
+  BlockCursors& cursors() { return cursors_; }
+  TravelDirection direction() const { return direction_; }
+  double direction_sign() const { return direction_ == TravelDirection::backward ? -1.0 : 1.0; }
+
+  // Where the path stands.
+  bool empty() const { return look_ahead_.empty(); }
+  const Block& front_block() const { return blocks_[look_ahead_.front().block_index]; }
+  // Nothing left to move, or the plan ended (held short of a block end).
+  bool standing(double t) const { return look_ahead_.empty() || t - plan_start_ >= plan_.duration(); }
+  const std::vector<AxisSetpoint>& setpoints() const { return setpoints_; }
+  std::vector<double> setpoint_positions() const;
+  double path_velocity() const { return path_velocity_; }
+  // The front block's part travelled so far, signed by the direction (DPS-1).
+  double front_covered() const { return front_covered_; }
+
+  // The hold's velocity factor (override, or 0); replans in the next interpolate().
+  void set_velocity_factor(double factor);
+  // Reports the travelled part of the front block and empties the
+  // look-ahead: the path stands there.
+  StopPoint leave_front(double t);
+  // A linear segment as block `target` into the empty look-ahead, not
+  // smoothed (DDTG-2); false if it has no length.
+  bool push_short_cut(size_t target, const Motion& cut);
+  // Refills the look-ahead and plans from standstill at t.
+  void go_on_from_standstill(double t);
+  // KRN-5: the path stands; the travel direction changes, and the look-ahead
+  // holds what is left of the front block the other way, then the stored
+  // contour (backward: as many motion blocks below the furthest one run as
+  // `stored_blocks`). False where it cannot turn: forward with nothing left.
+  bool turn(double t, size_t stored_blocks);
+
+  // Moves the path to time t (s after program start).
+  PathProgress interpolate(double t);
+
+ private:
+  void refill();
+  void refill_forward();
+  void refill_backward();
+  // Makes the look-ahead's front block the one in the interpolator, after
+  // reaching the blocks without motion before it, and plans from `state`
+  // (path position within the block) at time t0.
+  void begin_front(const MotionState& state, double t0);
+  void plan(const MotionState& state, double t0);
+  void finish_front();
+  void run_blocks_without_motion(size_t up_to);
+  MotionState path_state_at(double t) const { return plan_.at(t - plan_start_); }
+  void output(const MotionState& path);
+
+  const MachineConfig& machine_;
+  PathObserver& observer_;
+  std::vector<Block> blocks_;  // the decoded program
+  BlockCursors cursors_;
+  TravelDirection direction_ = TravelDirection::forward;
+  LookAhead look_ahead_;
+  MotionProfile plan_;    // of the stretch from the front block on; p = 0 at its start
+  double plan_start_ = 0;  // s after program start
+  bool replan_ = false;    // the velocity factor changed
+  std::vector<AxisSetpoint> setpoints_;
+  double path_velocity_ = 0;
+  double front_covered_ = 0;
+};
+
+}  // namespace hil::cnc
