@@ -1,9 +1,11 @@
 #include "path_interpolator.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "motion_parts.hpp"
 #include "position_profile.hpp"
+#include "velocity_profile.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -37,6 +39,7 @@ StopPoint PathInterpolator::leave_front(double t) {
   stop.position = setpoint_positions();
   if (stop.front_length > 0)
     observer_.travelled(direction_sign() * front.segment.covered_distance() * stop.s / stop.front_length);
+  travelled_before_front_ += stop.s;
   look_ahead_.clear();
   return stop;
 }
@@ -134,14 +137,42 @@ void PathInterpolator::begin_front(const MotionState& state, double t0) {
 // factor changes.
 void PathInterpolator::plan(const MotionState& state, double t0) {
   const Stretch st = look_ahead_.stretch(state.v);
-  plan_ = block_profile(state, st.length, st.v_end, st.lim, st.slope);
+  double length = st.length, v_end = st.v_end;
+  if (stop_at_) {
+    // Where the path stands if it brakes now, on the front block's scale.
+    const double braked = velocity_change(state.v, state.a, 0, st.lim, st.slope).end(state).p;
+    stop_at_ = std::max(*stop_at_, travelled_before_front_ + braked);
+    const double to_stop = *stop_at_ - travelled_before_front_;
+    if (to_stop <= length) {
+      length = to_stop;
+      v_end = 0;
+    }
+  }
+  plan_ = block_profile(state, length, v_end, st.lim, st.slope);
   plan_start_ = t0;
+}
+
+void PathInterpolator::stop_after(double t, double distance) {
+  stop_at_ = travelled_before_front_ + (look_ahead_.empty() ? 0.0 : path_state_at(t).p) + std::max(distance, 0.0);
+  replan_ = true;
+}
+
+void PathInterpolator::release_stop() {
+  stop_at_.reset();
+  replan_ = true;
+}
+
+bool PathInterpolator::at_stop(double t) const {
+  if (!stop_at_ || !standing(t)) return false;
+  const double p = travelled_before_front_ + (look_ahead_.empty() ? 0.0 : path_state_at(t).p);
+  return std::abs(p - *stop_at_) <= 1e-9 * (1 + std::abs(p));
 }
 
 void PathInterpolator::finish_front() {
   const LookAheadBlock& front = look_ahead_.front();
   observer_.travelled(direction_sign() * front.segment.covered_distance());
   observer_.finish_block(front.block_index);
+  travelled_before_front_ += front.segment.length();
   if (direction_ == TravelDirection::forward)
     cursors_.next_to_run = std::max(cursors_.next_to_run, front.block_index + 1);
   cursors_.last_finished = front.block_index;

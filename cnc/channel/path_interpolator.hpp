@@ -3,8 +3,9 @@
 // cycle time, on the plan of the look-ahead, in the travel direction
 // (KRN-5). The channel's functions act on it through a narrow interface:
 // where the path stands, leave the front block, go on from standstill,
-// turn, the velocity factor of the path's hold.
+// turn, stop at a path position, the velocity factor of the path's hold.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "block.hpp"
@@ -94,6 +95,14 @@ class PathInterpolator {
   // `stored_blocks`). False where it cannot turn: forward with nothing left.
   bool turn(double t, size_t stored_blocks);
 
+  // A stop `distance` mm further along the path from where it is at t, at
+  // v = 0 (insert stop marks): the path holds there until release_stop().
+  // A stop closer than the path can brake moves out to where it can stop.
+  void stop_after(double t, double distance);
+  void release_stop();
+  // The path stands at the stop asked for.
+  bool at_stop(double t) const;
+
   // Moves the path to time t (s after program start).
   PathProgress interpolate(double t);
 
@@ -120,6 +129,10 @@ class PathInterpolator {
   MotionProfile plan_;    // of the stretch from the front block on; p = 0 at its start
   double plan_start_ = 0;  // s after program start
   bool replan_ = false;    // the velocity factor changed
+  // Path length travelled (either direction) before the front segment, and
+  // where a stop is asked for on the same scale.
+  double travelled_before_front_ = 0;
+  std::optional<double> stop_at_;
   std::vector<AxisSetpoint> setpoints_;
   double path_velocity_ = 0;
   double front_covered_ = 0;

@@ -1,0 +1,87 @@
+// The interpolator's interface for the channel's functions (KRN-3): a stop
+// at a path position (insert stop marks, KRN-4), held within the limits.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "decoder.hpp"
+#include "limit_check.hpp"
+#include "path_interpolator.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+
+namespace {
+
+struct NoObserver : PathObserver {
+  void reach_block(const Block&, bool) override {}
+  void travelled(double) override {}
+  void finish_block(size_t) override {}
+};
+
+struct Run {
+  MachineConfig machine = test::xyz_machine();
+  NoObserver observer;
+  PathInterpolator path{machine, observer};
+  logger::LimitChecker checker{machine};
+  int64_t k = 0;
+
+  explicit Run(const std::string& program) {
+    path.load(decode_program(program, machine, std::vector<double>(machine.axes.size(), 0.0)).blocks);
+    path.set_velocity_factor(1.0);
+    path.go_on_from_standstill(0);
+  }
+  double t() const { return static_cast<double>(k) * machine.cycle_time_s(); }
+  PathProgress step() {
+    const PathProgress progress = path.interpolate(t());
+    for (size_t i = 0; i < path.setpoints().size(); ++i)
+      checker.add_setpoint(static_cast<int>(i), k, path.setpoints()[i].position);
+    ++k;
+    return progress;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("KRN-3 interpolator: a stop at a path position holds there, within the limits, until released",
+          "[interpolator]") {
+  Run run("N10 G01 X40 F6000\nN20 X80 Y10\nN30 X120\nM30\n");
+  while (run.t() < 0.2) run.step();
+  const double x_then = run.path.setpoints()[0].position;
+  REQUIRE(run.path.path_velocity() > 50);
+  run.path.stop_after(run.t() - run.machine.cycle_time_s(), 50.0);  // from x_then: across N10's end, into N20
+  int64_t held = 0;
+  for (int i = 0; i < 20000 && held < 200; ++i) {
+    run.step();
+    if (run.path.at_stop(run.t())) ++held;
+  }
+  REQUIRE(held == 200);
+  CHECK(run.path.path_velocity() == 0);
+  // 50 mm of path from x_then: the rest of N10 along X, then along N20.
+  const double rest_of_n10 = 40 - x_then, along_n20 = 50 - rest_of_n10;
+  const double n20_length = std::hypot(40.0, 10.0);
+  CHECK(run.path.setpoints()[0].position == Approx(40 + 40 * along_n20 / n20_length).margin(1e-6));
+  CHECK(run.path.setpoints()[1].position == Approx(10 * along_n20 / n20_length).margin(1e-6));
+  run.path.release_stop();
+  PathProgress progress = PathProgress::moving;
+  for (int i = 0; i < 20000 && progress != PathProgress::all_blocks_run; ++i) progress = run.step();
+  CHECK(progress == PathProgress::all_blocks_run);
+  CHECK(run.path.setpoints()[0].position == Approx(120));
+  CHECK(run.checker.finish().violations.empty());
+}
+
+TEST_CASE("KRN-3 interpolator: a stop closer than the braking distance moves out to where the path can stop",
+          "[interpolator]") {
+  Run run("N10 G01 X200 F6000\nM30\n");
+  while (run.t() < 0.5) run.step();
+  REQUIRE(run.path.path_velocity() == Approx(100));
+  run.path.stop_after(run.t(), 0.01);
+  int i = 0;
+  while (!run.path.at_stop(run.t()) && i++ < 5000) run.step();
+  REQUIRE(run.path.at_stop(run.t()));
+  run.step();
+  CHECK(run.path.path_velocity() == 0);
+  CHECK(run.path.setpoints()[0].position < 200);
+  CHECK(run.checker.finish().violations.empty());
+}
