@@ -36,7 +36,7 @@ DriveModel::Discrete DriveModel::discretise(const Eigen::Matrix3d& a, const Eige
 }
 
 DriveModel::DriveModel(const DriveParameters& p, double initial_position)
-    : p_(p), state_(initial_position, 0.0, 0.0) {
+    : p_(p), state_(initial_position, 0.0, 0.0), last_valid_setpoint_(initial_position) {
   require(p.kv >= 0 && std::isfinite(p.kv), "kv must be >= 0");
   require(p.velocity_lag_s > 0 && std::isfinite(p.velocity_lag_s), "velocity_lag_s must be > 0");
   require(p.cycle_time_s > 0 && std::isfinite(p.cycle_time_s), "the cycle time must be > 0");
@@ -140,6 +140,12 @@ Eigen::MatrixXd DriveModel::cycle_transition() const {
 }
 
 DriveOutput DriveModel::step(double setpoint_position, double velocity_feedforward) {
+  if (std::isfinite(setpoint_position) && std::isfinite(velocity_feedforward)) {
+    last_valid_setpoint_ = setpoint_position;
+  } else {
+    setpoint_position = last_valid_setpoint_;
+    velocity_feedforward = 0;
+  }
   const double previous_velocity = state_(1);
   for (int i = 0; i < substeps_; ++i) substep(setpoint_position, velocity_feedforward);
   DriveOutput out;

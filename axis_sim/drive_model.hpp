@@ -38,7 +38,9 @@ class DriveModel {
   // range or the closed loop is unstable (second order: kv < 2 zeta omega).
   explicit DriveModel(const DriveParameters& parameters, double initial_position = 0);
 
-  // Integrates one cycle under the setpoint (held over the cycle).
+  // Integrates one cycle under the setpoint (held over the cycle). A
+  // setpoint that is not finite is not taken: the drive holds the last
+  // valid one, without feed-forward (the monitor reports it as an error).
   DriveOutput step(double setpoint_position, double velocity_feedforward);
 
   // One cycle's state transition of the linear (unsaturated) loop, over the
@@ -61,6 +63,7 @@ class DriveModel {
   int substeps_ = 1;
   double h_ = 0;                  // substep, s
   Eigen::Vector3d state_;         // position, velocity, drive acceleration (second order only)
+  double last_valid_setpoint_;    // mm
 };
 
 // The model of a configured axis at the cycle time.

@@ -33,6 +33,12 @@ MonitorState DriveMonitor::check(const DriveSample& s, std::vector<Event>& event
     return o.str();
   };
 
+  const bool finite = std::isfinite(s.setpoint_position) && std::isfinite(s.setpoint_velocity) &&
+                      std::isfinite(s.position) && std::isfinite(s.velocity) && std::isfinite(s.acceleration);
+  test(monitor::not_finite, Severity::error, !finite, "", s.setpoint_position, 0,
+       text("setpoint position ", s.setpoint_position, " mm / velocity ", s.setpoint_velocity,
+            " mm/s is not a finite number; the drive holds its last valid setpoint"));
+
   const double a = std::abs(s.acceleration);
   const double a_warn = axis_.accel_warning_limit(), a_err = axis_.accel_error_limit();
   test(monitor::acceleration, Severity::warning, a > a_warn, "P-AXIS-00441", s.acceleration, a_warn,

@@ -3,6 +3,7 @@
 // parameter: acceleration P-AXIS-00441/00442, velocity P-AXIS-00439/00440,
 // following error P-AXIS-00168/00169 (P-AXIS-00172 type 4), software limit
 // switches P-AXIS-00177/00178 (+ P-AXIS-00179). Limits in docs/UNITS.md.
+// A setpoint that is not a finite number is an error of its own.
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,7 @@ constexpr int32_t acceleration = 0x1;
 constexpr int32_t velocity = 0x2;
 constexpr int32_t following_error = 0x4;
 constexpr int32_t software_limit = 0x8;
+constexpr int32_t not_finite = 0x10;  // a setpoint (or actual value) that is not a finite number
 }  // namespace monitor
 
 struct MonitorState {

@@ -122,7 +122,8 @@ std::string monitor_names(int32_t bits) {
       {hil::axis_state_t::MONITOR_ACCELERATION, "acceleration P-AXIS-00442"},
       {hil::axis_state_t::MONITOR_VELOCITY, "velocity P-AXIS-00440"},
       {hil::axis_state_t::MONITOR_FOLLOWING_ERROR, "following error P-AXIS-00168/00169"},
-      {hil::axis_state_t::MONITOR_SOFTWARE_LIMIT, "software limit switch P-AXIS-00177/00178"}};
+      {hil::axis_state_t::MONITOR_SOFTWARE_LIMIT, "software limit switch P-AXIS-00177/00178"},
+      {hil::axis_state_t::MONITOR_NOT_FINITE, "setpoint not finite"}};
   std::string out;
   for (const auto& [bit, name] : names)
     if (bits & bit) out += (out.empty() ? "" : ", ") + std::string(name);

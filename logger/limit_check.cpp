@@ -24,6 +24,10 @@ LimitChecker::LimitChecker(const MachineConfig& machine)
 void LimitChecker::check(std::vector<Violation>& out, double& max_seen, double value, double limit,
                          int64_t cycle, const std::string& axis, const char* quantity, double noise) const {
   const double magnitude = std::abs(value);
+  if (!std::isfinite(value)) {  // a number that is not finite breaks every limit
+    record(out, value, limit, cycle, axis, quantity);
+    return;
+  }
   max_seen = std::max(max_seen, magnitude);
   if (limit > 0 && magnitude > limit * (1 + limit_tolerance) + noise) record(out, value, limit, cycle, axis, quantity);
 }
@@ -66,6 +70,7 @@ void LimitChecker::add_actual(int axis, int64_t cycle, double position, double v
                               double following_error) {
   AxisSummary& s = summary_[axis];
   ++s.states;
+  if (!std::isfinite(position)) record(actual_violations_, position, 0, cycle, s.axis, "actual position (not finite)");
   check(actual_violations_, s.act_v, velocity, s.v_err_limit, cycle, s.axis,
         "actual velocity (P-AXIS-00440 limit)", 0);
   const AxisConfig& a = machine_.axes[axis];
@@ -88,14 +93,20 @@ CheckReport LimitChecker::finish() const {
     // The n-th difference of positions rounded to `ulp` can be off by
     // 2^n ulp / dt^n: allow for that noise, no more.
     double scale = 1.0;
-    for (double p : t.position) scale = std::max(scale, std::abs(p));
+    for (double p : t.position)
+      if (std::isfinite(p)) scale = std::max(scale, std::abs(p));
     const double ulp = scale * std::numeric_limits<double>::epsilon();
     const double noise[] = {0, 2 * ulp / dt, 4 * ulp / (dt * dt), 8 * ulp / (dt * dt * dt)};
     // Differences only across consecutive cycles; a gap restarts them.
     double v1 = 0, a1 = 0;
     int run = 0;  // consecutive samples so far
     for (size_t k = 0; k < t.position.size(); ++k) {
-      if (k == 0 || t.cycle[k] != t.cycle[k - 1] + 1) {
+      if (!std::isfinite(t.position[k])) {
+        record(report.violations, t.position[k], 0, t.cycle[k], s.axis, "commanded position (not finite)");
+        run = 0;
+        continue;
+      }
+      if (run == 0 || k == 0 || t.cycle[k] != t.cycle[k - 1] + 1) {
         run = 1;
         continue;
       }

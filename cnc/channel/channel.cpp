@@ -1,6 +1,7 @@
 #include "channel.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "decoder.hpp"
 #include "m_pre_output.hpp"
@@ -78,6 +79,21 @@ void Channel::interpolate(double t) {
   const PathProgress progress = path_.interpolate(t);
   hli_.dist_prog_start = distance_.value_mm(path_.front_covered()) * hli_units_per_mm;
   hli_.path_velocity = path_.path_velocity();
+  if (progress == PathProgress::invalid_block) {
+    const Block& block = path_.blocks()[*path_.invalid_block()];
+    Event e = events_.at_block(Severity::error, "the motion of line " + std::to_string(block.nc_line) +
+                                                    " has a length or limit that is not a finite number; "
+                                                    "the path stops before it; program aborted");
+    e.nc_line = block.nc_line;
+    e.block_nr = block.block_nr;
+    events_.raise(e);
+    hli_.channel_state = ChannelState::error;
+  }
+  if (progress == PathProgress::setpoint_not_finite) {
+    events_.raise(events_.at_block(Severity::error, "the interpolator computed a setpoint that is not a finite number; "
+                                                    "the axes hold the last valid setpoint; program aborted"));
+    hli_.channel_state = ChannelState::error;
+  }
   if (progress == PathProgress::reached_contour_start)
     events_.raise(events_.at_block(Severity::warning, "backward motion reached the start of the stored contour "
                                                       "(program start, or P-STUP-00033 full); it stands there"));

@@ -14,6 +14,13 @@ namespace {
 // told from a full circle.
 constexpr double shortest_rest_mm = 1e-5;
 
+// Numbers the planner can work with: a finite length and finite limits.
+bool finite(const PathSegment& segment) {
+  const Limits& lim = segment.limits();
+  return std::isfinite(segment.length()) && std::isfinite(lim.v) && std::isfinite(lim.a) && !std::isnan(lim.j) &&
+         std::isfinite(segment.covered_distance());
+}
+
 }  // namespace
 
 PathInterpolator::PathInterpolator(const MachineConfig& machine, PathObserver& observer)
@@ -99,7 +106,7 @@ void PathInterpolator::refill() {
 
 void PathInterpolator::refill_forward() {
   size_t& next = cursors_.next_to_look_ahead;
-  for (; !look_ahead_.full() && next < blocks_.size(); ++next) {
+  for (; !look_ahead_.full() && next < blocks_.size() && next != invalid_block_; ++next) {
     const Block& block = blocks_[next];
     if (!block.has_motion) continue;
     // M functions, a dwell or a channel initialisation on its line or since
@@ -110,7 +117,12 @@ void PathInterpolator::refill_forward() {
       stop_before = stop_before || blocks_[i].stops_path();
     }
     if (next < cursors_.begun) stop_before = false;  // forward again after backward motion: ran already
-    look_ahead_.push(next, PathSegment(block.motion, machine_), block.slope, stop_before);
+    PathSegment segment(block.motion, machine_);
+    if (!finite(segment)) {
+      invalid_block_ = next;
+      return;
+    }
+    look_ahead_.push(next, std::move(segment), block.slope, stop_before);
   }
 }
 
@@ -220,23 +232,39 @@ PathProgress PathInterpolator::interpolate(double t) {
     front_covered_ = 0;
     if (direction_ == TravelDirection::backward)
       return reached_contour_start ? PathProgress::reached_contour_start : PathProgress::at_contour_start;
+    if (invalid_block_) {
+      run_blocks_without_motion(*invalid_block_);
+      return PathProgress::invalid_block;
+    }
     // Every block decoded correctly has run.
     run_blocks_without_motion(blocks_.size());
     return PathProgress::all_blocks_run;
   }
   if (t - plan_start_ >= plan_.duration()) path.v = path.a = 0;  // held short of the block end
-  output(path);
-  return PathProgress::moving;
+  if (output(path)) return PathProgress::moving;
+  // Never a number that is not finite to the drives: nothing moves any more.
+  look_ahead_.clear();
+  cursors_.next_to_look_ahead = cursors_.next_to_run = cursors_.next_backward = blocks_.size();
+  cursors_.lowest_stored = blocks_.size();
+  for (AxisSetpoint& setpoint : setpoints_) setpoint.velocity = setpoint.acceleration = 0;
+  path_velocity_ = 0;
+  return PathProgress::setpoint_not_finite;
 }
 
-void PathInterpolator::output(const MotionState& path) {
+bool PathInterpolator::output(const MotionState& path) {
   const PathSegment& seg = look_ahead_.front().segment;
   const double s = std::clamp(path.p, 0.0, seg.length());
   const std::vector<double> p = seg.position(s), d1 = seg.tangent(s), d2 = seg.curvature(s);
-  for (size_t i = 0; i < setpoints_.size(); ++i)
-    setpoints_[i] = {p[i], d1[i] * path.v, d1[i] * path.a + d2[i] * path.v * path.v};
+  std::vector<AxisSetpoint> next(setpoints_.size());
+  for (size_t i = 0; i < setpoints_.size(); ++i) {
+    next[i] = {p[i], d1[i] * path.v, d1[i] * path.a + d2[i] * path.v * path.v};
+    if (!std::isfinite(next[i].position) || !std::isfinite(next[i].velocity) || !std::isfinite(next[i].acceleration))
+      return false;
+  }
+  setpoints_ = std::move(next);
   front_covered_ = direction_sign() * (seg.covered_distance() * s / seg.length());
   path_velocity_ = path.v;
+  return true;
 }
 
 }  // namespace hil::cnc

@@ -54,6 +54,8 @@ enum class PathProgress {
   reached_contour_start,  // backward: left the first stored block this cycle
   at_contour_start,       // backward: stands where the stored contour begins
   all_blocks_run,         // forward: every decoded block has run
+  setpoint_not_finite,    // a setpoint came out not finite: the path stopped on the last valid one
+  invalid_block,          // forward: the blocks before invalid_block() have run; it cannot be moved
 };
 
 class PathInterpolator {
@@ -103,6 +105,10 @@ class PathInterpolator {
   // The path stands at the stop asked for.
   bool at_stop(double t) const;
 
+  // A motion block whose geometry is not finite (a radius of 1e308): the
+  // path stops at the end of the block before it, as at a decode error.
+  const std::optional<size_t>& invalid_block() const { return invalid_block_; }
+
   // Moves the path to time t (s after program start).
   PathProgress interpolate(double t);
 
@@ -118,7 +124,8 @@ class PathInterpolator {
   void finish_front();
   void run_blocks_without_motion(size_t up_to);
   MotionState path_state_at(double t) const { return plan_.at(t - plan_start_); }
-  void output(const MotionState& path);
+  // False (setpoints unchanged) if a setpoint is not finite.
+  bool output(const MotionState& path);
 
   const MachineConfig& machine_;
   PathObserver& observer_;
@@ -133,6 +140,7 @@ class PathInterpolator {
   // where a stop is asked for on the same scale.
   double travelled_before_front_ = 0;
   std::optional<double> stop_at_;
+  std::optional<size_t> invalid_block_;
   std::vector<AxisSetpoint> setpoints_;
   double path_velocity_ = 0;
   double front_covered_ = 0;

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 #include "drive_model.hpp"
 #include "drive_monitor.hpp"
@@ -301,4 +302,26 @@ TEST_CASE("RIG-3 drive model: built from the machine file's axis", "[drive]") {
   CHECK(p.coulomb_friction == 20);
   CHECK(p.viscous_friction == 1);
   CHECK(std::isinf(drive_parameters(test::xyz_machine().axes[0], 0.001).acceleration_limit));  // none configured
+}
+
+TEST_CASE("RIG-3 a setpoint that is not finite is an error; the drive holds its last valid setpoint", "[drive]") {
+  const AxisConfig axis = test::xyz_machine().axes[0];
+  DriveModel drive(drive_parameters(axis, 0.001));
+  DriveMonitor monitor(axis);
+  std::vector<Event> events;
+  DriveOutput out;
+  for (int k = 0; k < 200; ++k) out = drive.step(0.5, 0);
+  CHECK(monitor.check({0.5, 0, out.position, out.velocity, out.acceleration, out.following_error}, events).errors == 0);
+  for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+    for (int k = 0; k < 500; ++k) out = drive.step(bad, 0);
+    CHECK(std::isfinite(out.position));
+    CHECK(out.position == Approx(0.5).margin(1e-3));  // held, settled on the last valid setpoint
+    const MonitorState m = monitor.check({bad, 0, out.position, out.velocity, out.acceleration, 0}, events);
+    CHECK(m.errors == monitor::not_finite);
+  }
+  REQUIRE(events.size() == 1);  // one excursion: both bad setpoints in a row
+  CHECK(events[0].severity == Severity::error);
+  CHECK_THAT(events[0].message, Catch::Contains("not a finite number"));
+  out = drive.step(0.5, 0);
+  CHECK(monitor.check({0.5, 0, out.position, out.velocity, out.acceleration, out.following_error}, events).errors == 0);
 }

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "limit_check.hpp"
@@ -111,4 +112,25 @@ TEST_CASE("RIG-4 limit check: actual velocity (P-AXIS-00440) and software limit 
   REQUIRE(found.count("actual position (P-AXIS-00177 swe_neg - P-AXIS-00179)"));
   CHECK(found["actual position (P-AXIS-00177 swe_neg - P-AXIS-00179)"].limit == Approx(-1.1));
   CHECK_FALSE(found.count("actual position (P-AXIS-00178 swe_pos + P-AXIS-00179)"));
+}
+
+TEST_CASE("RIG-4 limit check: a position, velocity or acceleration that is not finite is a violation", "[check]") {
+  const MachineConfig m = test::xyz_machine();
+  LimitChecker checker(m);
+  const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
+  for (int64_t k = 0; k < 20; ++k) checker.add_setpoint(0, k, k == 10 ? nan : 0.0);
+  for (int64_t k = 0; k < 20; ++k) checker.add_setpoint(1, k, k >= 15 ? inf : 0.0);
+  checker.add_actual(2, 3, 0, nan, 0, 0);
+  checker.add_actual(2, 4, inf, 0, 0, 0);
+  const CheckReport r = checker.finish();
+  REQUIRE_FALSE(r.passed());
+  std::map<std::string, int> seen;
+  for (const Violation& v : r.violations) seen[v.axis + " " + v.quantity] += v.cycles;
+  CHECK(seen["X commanded position (not finite)"] == 1);
+  CHECK(seen["Y commanded position (not finite)"] == 5);
+  CHECK(seen["Z actual velocity (P-AXIS-00440 limit)"] == 1);
+  CHECK(seen["Z actual position (not finite)"] == 1);
+  // The finite samples around the NaN stay clean: no velocity or jerk spike from it.
+  CHECK(seen.count("X commanded velocity") == 0);
+  CHECK(r.axes[0].cmd_v == 0);
 }

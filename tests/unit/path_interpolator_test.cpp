@@ -27,8 +27,10 @@ struct Run {
   logger::LimitChecker checker{machine};
   int64_t k = 0;
 
-  explicit Run(const std::string& program) {
-    path.load(decode_program(program, machine, std::vector<double>(machine.axes.size(), 0.0)).blocks);
+  explicit Run(const std::string& program)
+      : Run(decode_program(program, test::xyz_machine(), std::vector<double>(3, 0.0)).blocks) {}
+  explicit Run(std::vector<Block> blocks) {
+    path.load(std::move(blocks));
     path.set_velocity_factor(1.0);
     path.go_on_from_standstill(0);
   }
@@ -83,5 +85,38 @@ TEST_CASE("KRN-3 interpolator: a stop closer than the braking distance moves out
   run.step();
   CHECK(run.path.path_velocity() == 0);
   CHECK(run.path.setpoints()[0].position < 200);
+  CHECK(run.checker.finish().violations.empty());
+}
+
+TEST_CASE("KRN-3 interpolator: a block whose geometry is not finite is never moved; the path stops before it",
+          "[interpolator]") {
+  // A block no decoder should let through: an arc of radius 1e308 (the
+  // decoder refuses it; this is the interpolator's own last line of defence).
+  Block arc;
+  arc.has_motion = true;
+  arc.nc_line = 2;
+  arc.motion.type = MotionType::arc_cw;
+  arc.motion.start = {10, 0, 0};
+  arc.motion.end = {10, 200, 0};
+  arc.motion.center_x = 10;
+  arc.motion.center_y = 1e308;
+  arc.motion.feed = 100;
+  std::vector<Block> blocks = decode_program("N10 G01 X10 F6000\n", test::xyz_machine(), {0, 0, 0}).blocks;
+  blocks.push_back(arc);
+  Run run(blocks);
+  PathProgress progress = PathProgress::moving;
+  for (int i = 0; i < 20000 && progress == PathProgress::moving; ++i) {
+    progress = run.step();
+    for (const AxisSetpoint& s : run.path.setpoints()) {
+      REQUIRE(std::isfinite(s.position));
+      REQUIRE(std::isfinite(s.velocity));
+      REQUIRE(std::isfinite(s.acceleration));
+    }
+  }
+  CHECK(progress == PathProgress::invalid_block);
+  CHECK(run.path.invalid_block() == size_t{1});
+  CHECK(run.path.setpoints()[0].position == 10);
+  CHECK(run.path.setpoints()[1].position == 0);
+  CHECK(run.path.path_velocity() == 0);
   CHECK(run.checker.finish().violations.empty());
 }
