@@ -11,6 +11,18 @@ namespace {
 DecodedProgram decode(const std::string& text) {
   return decode_program(text, test::xyz_machine(), {0, 0, 0});
 }
+
+// `line` (N30) after two good blocks is refused with exactly `message`,
+// naming line 3 and N30; the two blocks before it are kept (KRN-2).
+void check_refused_as_line_3(const std::string& line, const std::string& message) {
+  INFO(line);
+  const DecodedProgram p = decode("N10 G01 X1 F100\nN20 #TIME 1\n" + line + "\nN40 X50\n");
+  REQUIRE(p.error);
+  CHECK(p.error->nc_line == 3);
+  CHECK(p.error->block_nr == 30);
+  CHECK(p.error->message == message + " in '" + line + "'");
+  CHECK(p.blocks.size() == 2);
+}
 }  // namespace
 
 TEST_CASE("KRN-1 decoder: N numbers, G00/G01, modal feed, absolute and incremental", "[decoder]") {
@@ -319,4 +331,53 @@ TEST_CASE("KRN-1 DDTG-7 decoder: M function pre-output path from P-CHAN-00070 an
   REQUIRE(q.blocks.size() == 2);
   CHECK(q.blocks[0].m_functions == std::vector<MFunction>{{8, 5}});
   CHECK(q.blocks[1].m_functions == std::vector<MFunction>{{7, 0}});
+}
+
+TEST_CASE("KRN-1 decoder: each '#' command is found through the command table, any case and spacing",
+          "[decoder]") {
+  const DecodedProgram p = decode(
+      "N10 #DISTANCE PROG START CLEAR\n"
+      "N20 #slope  [ type = step ]\n"
+      "N30 G01 X1 F100\n"
+      "N40 #DEL   DIST2GO [END=4]\n"
+      "N50 #Time2.5\n"  // a digit may follow the keyword directly
+      "N60 #CS ON[0,0,1]\n"
+      "N70 #CS OFF\n"
+      "N80 #CHANNEL INIT[CMDPOS]\n");
+  INFO((p.error ? p.error->message : std::string()));
+  REQUIRE_FALSE(p.error);
+  REQUIRE(p.blocks.size() == 7);  // #SLOPE is modal decoder state: no block of its own
+  CHECK(p.blocks[0].distance_prog_start == DistanceProgStart::clear);
+  CHECK(p.blocks[1].slope == SlopeType::step);
+  CHECK(p.blocks[2].ddtg_end_marker == 4u);
+  CHECK(p.blocks[3].dwell_s == 2.5);
+  CHECK(p.blocks[4].short_cut_restriction == ShortCutRestriction::not_skippable);
+  CHECK(p.blocks[5].short_cut_restriction == ShortCutRestriction::not_skippable);
+  CHECK(p.blocks[6].short_cut_restriction == ShortCutRestriction::channel_initialisation);
+  const int64_t block_nrs[] = {10, 30, 40, 50, 60, 70, 80};
+  for (size_t i = 0; i < p.blocks.size(); ++i) CHECK(p.blocks[i].block_nr == block_nrs[i]);
+}
+
+TEST_CASE("KRN-1 KRN-2 decoder: a command is its whole keyword; others are refused with their line", "[decoder]") {
+  check_refused_as_line_3("N30 #CSX ON [1]", "command '#CSX' is not supported yet");
+  check_refused_as_line_3("N30 #SLOPEX[TYPE=STEP]", "command '#SLOPEX' is not supported yet");
+  check_refused_as_line_3("N30 #TIMEX 5", "command '#TIMEX' is not supported yet");
+  check_refused_as_line_3("N30 #DEL DIST2GOX", "command '#DEL' is not supported yet");
+  check_refused_as_line_3("N30 #foo [1]", "command '#FOO' is not supported yet");
+  // Not in the table yet (KRN-1, KRN-6).
+  check_refused_as_line_3("N30 #FLUSH WAIT", "command '#FLUSH' is not supported yet");
+  check_refused_as_line_3("N30 #INSERT CMD", "command '#INSERT' is not supported yet");
+  check_refused_as_line_3("N30 #CONTOUR MODE [DEV PATH_DEV=0.1]", "command '#CONTOUR' is not supported yet");
+}
+
+TEST_CASE("KRN-1 KRN-2 decoder: axis commands <axis>[KEYWORD ...] are refused naming the keyword", "[decoder]") {
+  // The forms of TF5200_lift_function.txt, none implemented yet.
+  check_refused_as_line_3("N30 Z[LIFT_START POS=40 POS_LIMIT=30]", "axis command 'Z[LIFT_START]' is not supported yet");
+  check_refused_as_line_3("N30 G01 X2 Y3 Z[LIFT_END]", "axis command 'Z[LIFT_END]' is not supported yet");
+  check_refused_as_line_3("N30 x2 z [ lift pos=30 pos_limit=300 ]", "axis command 'Z[LIFT]' is not supported yet");
+  check_refused_as_line_3("N30 Z[LIFT_START DOWN G91 POS_LIMIT=3", "axis command 'Z[LIFT_START' has no closing ']'");
+  check_refused_as_line_3("N30 Q[LIFT_END]", "'Q[LIFT_END]': Q is not an axis of this machine");
+  // An expression in brackets is no command; expressions in axis words are not supported.
+  check_refused_as_line_3("N30 X[10]", "address 'X' needs a number");
+  check_refused_as_line_3("N30 X[P1 + 2]", "address 'X' needs a number");
 }

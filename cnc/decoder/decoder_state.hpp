@@ -1,0 +1,42 @@
+#pragma once
+// What decoding carries from one NC line to the next (KRN-1): modal G
+// codes, F and #SLOPE, the position reached, P parameters, M function
+// pre-output paths, G92 offsets and the active #CS.
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "block.hpp"
+#include "coordinate_system.hpp"
+#include "machine_config.hpp"
+#include "parameter_expression.hpp"
+
+namespace hil::cnc::decoding {
+
+struct ModalState {
+  MotionType motion = MotionType::linear;
+  bool absolute = true;  // G90
+  double feed = 0;       // mm/s
+  SlopeType slope = SlopeType::trapez;
+  bool centre_absolute = false;    // G161; G162 (relative to the start) is the initial state
+  bool centre_correction = false;  // G165: move the centre onto the circle through start and end; G164 off
+};
+
+struct DecoderState {
+  DecoderState(const MachineConfig& machine_config, std::vector<double> start)
+      : machine(machine_config),
+        position(std::move(start)),
+        pre_output_mm(machine.m_pre_output_mm),
+        offset(position.size(), 0.0) {}
+
+  const MachineConfig& machine;
+  std::vector<double> position;        // machine coordinates
+  ParameterValues parameters;          // P parameters
+  std::map<int, double> pre_output_mm;  // M function pre-output (P-CHAN-00070, V.G.M_FCT[m].PRE_OUTP_PATH), mm
+  std::vector<double> offset;          // G92: machine - program
+  std::optional<CoordinateSystem> cs;  // #CS ON
+  ModalState modal;
+};
+
+}  // namespace hil::cnc::decoding

@@ -1,0 +1,21 @@
+#pragma once
+// Where a motion block goes (KRN-1): its end point and its arc centre in
+// machine coordinates, from the programmed words through G90/G91, the G92
+// offsets and the active #CS.
+#include <optional>
+#include <vector>
+
+#include "block.hpp"
+#include "decoder_state.hpp"
+
+namespace hil::cnc::decoding {
+
+// The end point of a block with these axis words (one per machine axis).
+std::vector<double> programmed_target(const std::vector<std::optional<double>>& axis_words,
+                                      const DecoderState& state);
+
+// The centre of the G02/G03 motion `m` (start and end set) from I/J
+// (G161/G162, G165); throws LineError if the end is not on the circle.
+void set_arc_centre(Motion& m, std::optional<double> i, std::optional<double> j, const DecoderState& state);
+
+}  // namespace hil::cnc::decoding

@@ -1,0 +1,191 @@
+#include "nc_commands.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <cstdlib>
+#include <iterator>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace hil::cnc::decoding {
+namespace {
+
+// A handler gets what follows its keyword, upper case with single blanks
+// and no leading blank: "[TYPE=SIN2]" for #SLOPE [TYPE=SIN2].
+using CommandHandler = void (*)(const std::string& arguments, DecoderState& state, Block& block);
+// An axis command's handler also gets the machine axis it is programmed on.
+using AxisCommandHandler = void (*)(int axis, const std::string& arguments, DecoderState& state, Block& block);
+
+template <typename Handler>
+struct Keyword {
+  std::string_view keyword;  // upper case, single blanks: how upper_words writes the command
+  Handler decode;
+};
+using NcCommand = Keyword<CommandHandler>;
+using AxisCommand = Keyword<AxisCommandHandler>;
+
+// A letter after a keyword makes another word (#CSX is not #CS); a digit
+// may follow directly (#TIME5 is #TIME 5, as it always was).
+bool continues_keyword(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+
+// The row whose keyword `text` starts with, ending there; the longest, so
+// that #FLUSH WAIT is not #FLUSH.
+template <typename Table>
+const auto* find_command(const Table& table, const std::string& text) {
+  using Row = std::remove_reference_t<decltype(*std::begin(table))>;
+  Row* found = nullptr;
+  for (Row& row : table) {
+    const std::string_view keyword = row.keyword;
+    const bool starts_with = text.compare(0, keyword.size(), keyword) == 0;  // so text is no shorter
+    if (starts_with && (text.size() == keyword.size() || !continues_keyword(text[keyword.size()])) &&
+        (!found || keyword.size() > found->keyword.size()))
+      found = &row;
+  }
+  return found;
+}
+
+std::string arguments_after(const std::string& text, std::string_view keyword) {
+  std::string arguments = text.substr(keyword.size());
+  if (!arguments.empty() && arguments[0] == ' ') arguments.erase(0, 1);
+  return arguments;
+}
+
+// Blanks are not significant inside brackets: [ END = 8 ] is [END=8].
+std::string without_blanks(std::string arguments) {
+  arguments.erase(std::remove(arguments.begin(), arguments.end(), ' '), arguments.end());
+  return arguments;
+}
+
+// <value> of arguments that are exactly [<key>=<value>] (without blanks).
+std::optional<std::string> key_value(const std::string& arguments, const std::string& key) {
+  const std::string prefix = "[" + key + "=";
+  if (arguments.rfind(prefix, 0) != 0 || arguments.back() != ']') return std::nullopt;
+  return arguments.substr(prefix.size(), arguments.size() - prefix.size() - 1);
+}
+
+// #DISTANCE PROG START ON|OFF (modal) or CLEAR (DPS-2).
+void decode_distance_prog_start(const std::string& arguments, DecoderState&, Block& block) {
+  if (arguments == "ON") block.distance_prog_start = DistanceProgStart::on;
+  else if (arguments == "OFF") block.distance_prog_start = DistanceProgStart::off;
+  else if (arguments == "CLEAR") block.distance_prog_start = DistanceProgStart::clear;
+  else throw LineError{"#DISTANCE PROG START needs ON, OFF or CLEAR"};
+}
+
+// #SLOPE [TYPE=..]: modal, the profile of the motion blocks after it (KRN-3).
+void decode_slope(const std::string& arguments, DecoderState& state, Block&) {
+  const std::optional<std::string> name = key_value(without_blanks(arguments), "TYPE");
+  if (!name) throw LineError{"#SLOPE needs [TYPE=STEP|TRAPEZ|SIN2]"};
+  const std::optional<SlopeType> type = parse_slope_type(*name);
+  if (!type) throw LineError{"#SLOPE type '" + *name + "' is not one of STEP, TRAPEZ, SIN2"};
+  state.modal.slope = *type;
+}
+
+// END as a number or an IEC literal '16#0105' (also 2# and 8#); default 1 (DDTG-5).
+uint32_t end_marker(const std::string& arguments) {
+  if (arguments.empty() || arguments == "[]") return 1;
+  const std::optional<std::string> bracketed = key_value(arguments, "END");
+  if (!bracketed) throw LineError{"#DEL DIST2GO takes [END=<32-bit mask>], e.g. [END='16#0105']"};
+  std::string value = *bracketed;
+  if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') value = value.substr(1, value.size() - 2);
+  int base = 10;
+  if (const size_t hash = value.find('#'); hash != std::string::npos) {
+    base = std::atoi(value.substr(0, hash).c_str());
+    value = value.substr(hash + 1);
+    if (base != 2 && base != 8 && base != 16) throw LineError{"#DEL DIST2GO END: base must be 2#, 8# or 16#"};
+  }
+  char* end = nullptr;
+  const unsigned long long mask = value.empty() ? 0 : std::strtoull(value.c_str(), &end, base);
+  if (value.empty() || *end != '\0' || mask > 0xFFFFFFFFull || value[0] == '-')
+    throw LineError{"#DEL DIST2GO END '" + value + "' is not a 32-bit mask"};
+  return static_cast<uint32_t>(mask);
+}
+
+// #DEL DIST2GO, #DEL DIST2GO [], #DEL DIST2GO [END=<32-bit>]: a short-cut target.
+void decode_del_dist2go(const std::string& arguments, DecoderState&, Block& block) {
+  block.ddtg_end_marker = end_marker(without_blanks(arguments));
+}
+
+// #TIME <s>: dwell; an expression, so P parameters can set it.
+void decode_time(const std::string& arguments, DecoderState& state, Block& block) {
+  try {
+    const double seconds = evaluate_expression(arguments, state.parameters);
+    if (seconds > 0) {
+      block.dwell_s = seconds;
+      return;
+    }
+  } catch (const std::invalid_argument&) {
+  }
+  throw LineError{"#TIME needs a dwell time > 0 in s"};
+}
+
+// #CS ON [v1,v2,v3,φ1,φ2,φ3], #CS ON [<id>] [..], #CS OFF; one CS at a time.
+void decode_coordinate_system(const std::string& arguments, DecoderState& state, Block& block) {
+  block.short_cut_restriction = ShortCutRestriction::not_skippable;  // DDTG-8
+  if (arguments == "OFF") {
+    if (!state.cs) throw LineError{"#CS OFF without an active #CS"};
+    state.cs.reset();
+    return;
+  }
+  if (arguments.rfind("ON", 0) != 0) throw LineError{"#CS takes ON [v1,v2,v3,φ1,φ2,φ3] or OFF"};
+  std::vector<std::string> groups;
+  for (size_t open = arguments.find('['); open != std::string::npos; open = arguments.find('[', open + 1)) {
+    const size_t close = arguments.find(']', open);
+    if (close == std::string::npos) throw LineError{"#CS ON: '[' is not closed"};
+    groups.push_back(arguments.substr(open + 1, close - open - 1));
+  }
+  if (groups.empty() || groups.size() > 2)
+    throw LineError{"#CS ON needs [v1,v2,v3,φ1,φ2,φ3], optionally after [<CS-ID>] (stored CS are not supported yet)"};
+  if (state.cs)
+    throw LineError{"#CS ON while a #CS is active: deselect it with #CS OFF first (nesting is not supported yet)"};
+  for (const char* axis : {"X", "Y", "Z"})
+    if (state.machine.axis_index(axis) < 0) throw LineError{"#CS needs the main axes X, Y and Z"};
+  state.cs = CoordinateSystem::parse(groups.back(), state.parameters);
+}
+
+// #CHANNEL INIT [CMDPOS]: the command positions the interpolator would
+// report are the ones decoded (this rig has no manual mode offsets); the
+// path stands still there (Block::stops_path).
+void decode_channel_init(const std::string& arguments, DecoderState&, Block& block) {
+  if (without_blanks(arguments) != "[CMDPOS]")
+    throw LineError{"#CHANNEL INIT takes [CMDPOS] (ACTPOS and single axes are not supported yet)"};
+  block.short_cut_restriction = ShortCutRestriction::channel_initialisation;
+}
+
+// A new command is a handler above and one row here; next (KRN-1, KRN-6):
+// #INSERT CMD, #FLUSH, #FLUSH WAIT, #CONTOUR MODE.
+constexpr NcCommand nc_commands[] = {
+    {"#DISTANCE PROG START", decode_distance_prog_start},
+    {"#SLOPE", decode_slope},
+    {"#DEL DIST2GO", decode_del_dist2go},
+    {"#TIME", decode_time},
+    {"#CS", decode_coordinate_system},
+    {"#CHANNEL INIT", decode_channel_init},
+};
+
+// None yet: Z[LIFT_START ..], Z[LIFT_END], Z[LIFT ..]
+// (TF5200_lift_function.txt). With its first row this becomes
+// `constexpr AxisCommand axis_commands[] = {...}` (a C array cannot be empty).
+constexpr std::array<AxisCommand, 0> axis_commands{};
+
+}  // namespace
+
+void decode_nc_command(const std::string& command, DecoderState& state, Block& block) {
+  const NcCommand* found = find_command(nc_commands, command);
+  if (!found) throw LineError{"command '" + command.substr(0, command.find_first_of(" [")) + "' is not supported yet"};
+  found->decode(arguments_after(command, found->keyword), state, block);
+}
+
+void decode_axis_command(const Word& word, int axis, DecoderState& state, Block& block) {
+  const AxisCommand* found = find_command(axis_commands, word.command);
+  if (!found)
+    throw LineError{std::string("axis command '") + word.letter + "[" + command_keyword(word.command) +
+                    "]' is not supported yet"};
+  found->decode(axis, arguments_after(word.command, found->keyword), state, block);
+}
+
+}  // namespace hil::cnc::decoding

@@ -1,0 +1,50 @@
+#pragma once
+// The lexical level of one NC line (KRN-1): comments, words (an address
+// letter and its number), and the error of a line.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace hil::cnc::decoding {
+
+// Thrown while one line is decoded; decode_program turns it into the Event
+// of that line (NC line and N number are added there).
+struct LineError {
+  std::string message;
+};
+
+// X10, G01, or an axis command in square brackets, Z[LIFT_START POS=40]:
+// then `command` is what stands between the brackets (upper case, single
+// blanks) and `value` is 0.
+struct Word {
+  char letter;
+  double value;
+  std::string text;     // as written, for messages
+  std::string command;  // empty for a number
+  bool is_axis_command() const { return !command.empty(); }
+};
+
+// The keyword of an axis command: LIFT_START of LIFT_START POS=40.
+std::string command_keyword(const std::string& command);
+
+// `line` without its `;` and `( )` comments.
+std::string strip_comments(const std::string& line);
+
+std::vector<Word> split_words(const std::string& code);
+
+// The number of an N, G or M word.
+int integer_code(const Word& w);
+
+// Upper case, blanks between words reduced to one: how '#' commands and
+// axis commands are matched against their keywords.
+std::string upper_words(const std::string& text);
+
+// A '#' or '$' command the decoder does not know, starting at code[i].
+LineError unsupported_command(const std::string& code, size_t i);
+
+// The '=' of an assignment (P1 = 2): the first one outside square brackets,
+// since inside them it belongs to an axis command (Z[LIFT_START POS=40]).
+// std::string::npos if there is none.
+size_t find_assignment(const std::string& code);
+
+}  // namespace hil::cnc::decoding
