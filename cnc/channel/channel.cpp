@@ -169,7 +169,7 @@ void Channel::apply_delete_distance_to_go(const HliControl& control) {
     }
   }
   // The end marker mask (DDTG-5), in force from the next short cut on.
-  const ControlUnitValue& activation = control.delete_distance_to_go_activation;
+  const ControlUnitUns32& activation = control.delete_distance_to_go_activation;
   hli_.delete_distance_to_go_activation.request_r = activation.enable_w;
   hli_.delete_distance_to_go_activation.state_r = activation.enable_w ? activation.command_w : 0;
 }

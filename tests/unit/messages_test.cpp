@@ -1,29 +1,12 @@
 // RIG-2, KRN-4: the nodes' translation between library values and LCM
 // messages loses no field, including through LCM's own encoding.
-// g++ 12 inlines lcm-gen's decode() here and sees a false
-// -Wmaybe-uninitialized on its hash (set whenever decoding succeeded).
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <catch2/catch.hpp>
-
-#include <vector>
+#include "wire.hpp"
 
 #include "channels.hpp"
 #include "messages.hpp"
 
 using namespace hil;
-
-namespace {
-
-template <typename Message>
-Message through_the_wire(const Message& m) {
-  std::vector<uint8_t> bytes(m.getEncodedSize());
-  REQUIRE(m.encode(bytes.data(), 0, static_cast<int>(bytes.size())) == static_cast<int>(bytes.size()));
-  Message back;
-  REQUIRE(back.decode(bytes.data(), 0, static_cast<int>(bytes.size())) == static_cast<int>(bytes.size()));
-  return back;
-}
-
-}  // namespace
+using test::through_the_wire;
 
 TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[messages]") {
   HliState s;
