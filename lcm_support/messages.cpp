@@ -46,6 +46,7 @@ hil::event_t to_message(const Event& e, int64_t cycle, int64_t utime, const std:
   m.utime = utime;
   m.cycle = cycle;
   m.severity = static_cast<int8_t>(e.severity);
+  m.verdict = static_cast<int8_t>(e.verdict);
   m.id = e.id;
   m.parameter = e.parameter;
   m.source = source;
@@ -60,7 +61,7 @@ hil::event_t to_message(const Event& e, int64_t cycle, int64_t utime, const std:
 
 Event from_message(const hil::event_t& m) {
   return {static_cast<Severity>(m.severity), m.id, m.parameter, m.axis, m.nc_line, m.block_nr,
-          m.value, m.limit, m.message};
+          m.value, m.limit, m.message, static_cast<Verdict>(m.verdict)};
 }
 
 hil::hli_state_t to_message(const HliState& s, int64_t utime) {

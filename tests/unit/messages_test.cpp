@@ -101,6 +101,22 @@ TEST_CASE("KRN-2 messages: an event keeps its ID, parameter, NC line, block and 
   CHECK(f.value == 3100.5);
   CHECK(f.limit == 3000);
   CHECK(f.message == e.message);
+  CHECK(f.verdict == Verdict::none);
+}
+
+TEST_CASE("RIG-5 KRN-4 messages: an expectation's verdict is a field of the event, PASS or FAIL", "[messages]") {
+  for (Verdict verdict : {Verdict::none, Verdict::pass, Verdict::fail}) {
+    Event e;
+    e.severity = verdict == Verdict::fail ? Severity::error : Severity::info;
+    e.verdict = verdict;
+    e.message = "at program_end: all checks hold";  // the text says nothing of it
+    const hil::event_t m = through_the_wire(lcm_support::to_message(e, 3, 3000, "plc_sim"));
+    CHECK(m.verdict == static_cast<int8_t>(verdict));
+    CHECK(lcm_support::from_message(m).verdict == verdict);
+  }
+  CHECK(hil::event_t::VERDICT_NONE == static_cast<int8_t>(Verdict::none));
+  CHECK(hil::event_t::VERDICT_PASS == static_cast<int8_t>(Verdict::pass));
+  CHECK(hil::event_t::VERDICT_FAIL == static_cast<int8_t>(Verdict::fail));
 }
 
 TEST_CASE("RIG-2 channels: the axis of an axis channel name, the inverse of axis_command / axis_state", "[messages]") {
