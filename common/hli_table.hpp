@@ -29,7 +29,7 @@
   X(ControlUnitValue, override)                                                        \
   /* Rising edge of command_w while enable_w: delete distance to go (DDTG-1). */       \
   X(ControlUnitBool, delete_distance_to_go)                                            \
-  /* UDINT mask that makes #DEL DIST2GO [END=..] markers valid (DDTG-5). */             \
+  /* UDINT mask that makes #DEL DIST2GO [END=..] markers valid (DDTG-5). */            \
   X(ControlUnitUns32, delete_distance_to_go_activation)                                \
   /* Rising edge of command_w while enable_w acknowledges the M function the CNC */    \
   /* waits for (m_function_request_r). */                                              \
@@ -39,6 +39,7 @@
   X(ControlUnitBool, backward_motion)
 
 // CNC -> PLC (hli_state_t), once per cycle. HLI lengths in 0.1 um.
+// block_nr_r and block_count_r are UDINT in the texts: int64_t holds them all.
 #define HLI_STATE_FIELDS(X)                                                          \
   X(ChannelState, channel_state)                                                     \
   X(int64_t, block_nr_r)      /* N number of the block in the interpolator */        \

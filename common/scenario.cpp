@@ -37,7 +37,8 @@ int64_t hli_field_value(const std::string& key, const YAML::Node& node, const st
   int64_t value = 0;
   if (YAML::convert<bool>::decode(node, flag)) value = flag ? 1 : 0;
   else if (!YAML::convert<int64_t>::decode(node, value))
-    throw ConfigError(where + ": '" + key + "' takes true, false or a whole number, not '" + node.as<std::string>() + "'");
+    throw ConfigError(where + ": '" + key + "' takes true, false or a whole number, not '" +
+                      node.as<std::string>() + "'");
   if (!field->holds(value))
     throw ConfigError(where + ": '" + key + "' is " + field->type_text() + ", not " + node.as<std::string>());
   return value;
