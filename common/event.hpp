@@ -8,6 +8,10 @@ namespace hil {
 
 enum class Severity : int8_t { info = 0, warning = 1, error = 2 };
 
+// An expectation's outcome (RIG-5): the PLC simulator's events carry it, so
+// the rig counts them without reading the message; other events have none.
+enum class Verdict : int8_t { none = 0, pass = 1, fail = 2 };
+
 struct Event {
   Severity severity = Severity::error;
   int32_t id = 0;             // TF5200 error/warning number, 0 = none documented
@@ -18,6 +22,7 @@ struct Event {
   double value = 0.0;
   double limit = 0.0;
   std::string message;
+  Verdict verdict = Verdict::none;
 };
 
 const char* to_string(Severity severity);

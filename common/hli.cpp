@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <utility>
 
 namespace hil {
 
@@ -28,43 +27,6 @@ bool parse_channel_state(const std::string& text, ChannelState& state) {
     }
   }
   return false;
-}
-
-namespace {
-
-const std::vector<std::pair<std::string, ControlUnitState HliState::*>> bool_units = {
-    {"program_start", &HliState::program_start},
-    {"feedhold", &HliState::feedhold},
-    {"delete_distance_to_go", &HliState::delete_distance_to_go},
-    {"backward_motion", &HliState::backward_motion},
-};
-const std::vector<std::pair<std::string, ControlUnitValueState HliState::*>> value_units = {
-    {"override", &HliState::override},
-    {"delete_distance_to_go_activation", &HliState::delete_distance_to_go_activation},
-};
-
-}  // namespace
-
-std::optional<int64_t> read_state_field(const HliState& state, const std::string& name) {
-  for (const auto& [unit, member] : bool_units) {
-    if (name == unit + ".request_r") return (state.*member).request_r;
-    if (name == unit + ".state_r") return (state.*member).state_r;
-  }
-  for (const auto& [unit, member] : value_units) {
-    if (name == unit + ".request_r") return (state.*member).request_r;
-    if (name == unit + ".state_r") return (state.*member).state_r;
-  }
-  if (name == "m_function_request_r") return state.m_function_request_r;
-  if (name == "stop_conditions_r") return state.stop_conditions_r;
-  return std::nullopt;
-}
-
-std::vector<std::string> state_field_names() {
-  std::vector<std::string> names;
-  for (const auto& unit : bool_units) names.insert(names.end(), {unit.first + ".request_r", unit.first + ".state_r"});
-  for (const auto& unit : value_units) names.insert(names.end(), {unit.first + ".request_r", unit.first + ".state_r"});
-  names.insert(names.end(), {"m_function_request_r", "stop_conditions_r"});
-  return names;
 }
 
 }  // namespace hil

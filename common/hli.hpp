@@ -2,10 +2,13 @@
 // The HLI (PLC <-> CNC interface, KRN-4) as plain values. The CNC's channel
 // library fills HliState, the PLC simulator writes HliControl; the nodes
 // translate both to and from the LCM types hli_state_t / hli_control_t.
+// Their fields are listed once, in hli_table.hpp.
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
+
+#include "hli_record.hpp"
+#include "hli_table.hpp"
 
 namespace hil {
 
@@ -24,73 +27,37 @@ constexpr int32_t ipo_input_empty = 0x1000;   // HLI_SC_IPO_INPUT_EMPTY
 constexpr int32_t channel_error = 0x00010000;  // HLI_SC_CHANNEL_ERROR
 }  // namespace stop_condition
 
-struct ControlUnitBool {
-  bool command_w = false;
-  bool enable_w = false;
+// The control unit types (HLI_CONTROL_UNIT_FIELDS / HLI_STATE_UNIT_FIELDS),
+// by the type of command_w and state_r.
+template <typename Command>
+struct ControlUnit {
+  HIL_RECORD(ControlUnit, HLI_CONTROL_UNIT_FIELDS)
 };
-
-struct ControlUnitState {
-  bool request_r = false;
-  bool state_r = false;
+template <typename State>
+struct ControlUnitStateOf {
+  HIL_RECORD(ControlUnitStateOf, HLI_STATE_UNIT_FIELDS)
 };
-
-struct ControlUnitValue {
-  int32_t command_w = 0;
-  bool enable_w = false;
-};
-
-struct ControlUnitValueState {
-  bool request_r = false;
-  int32_t state_r = 0;
-};
+using ControlUnitBool = ControlUnit<bool>;                  // MC_CONTROL_BOOL_UNIT
+using ControlUnitValue = ControlUnit<int32_t>;              // DINT command (override)
+using ControlUnitUns32 = ControlUnit<uint32_t>;             // MC_CONTROL_UNS32_UNIT (UDINT)
+using ControlUnitState = ControlUnitStateOf<bool>;
+using ControlUnitValueState = ControlUnitStateOf<int32_t>;
+using ControlUnitUns32State = ControlUnitStateOf<uint32_t>;
 
 // Override values are in 0.1 % (1000 = 100 %).
 constexpr int32_t override_full = 1000;
 
+// The members are the table's (hli_table.hpp); `cycle` belongs to the
+// message, not to the HLI.
 struct HliControl {
   int64_t cycle = -1;  // the HLI_STATE cycle this answers
-  ControlUnitBool program_start;
-  ControlUnitBool feedhold;
-  ControlUnitValue override;
-  ControlUnitBool delete_distance_to_go;
-  ControlUnitValue delete_distance_to_go_activation;
-  // A rising edge of command_w while enable_w acknowledges the M function
-  // the CNC waits for (m_function_request_r).
-  ControlUnitBool m_function_ack;
-  // Backward motion on the path (bahn_mc_control.backward_motion): not built;
-  // a request holds the path with a warning until withdrawn (DDTG-10).
-  ControlUnitBool backward_motion;
+  HIL_RECORD(HliControl, HLI_CONTROL_UNITS)
 };
 
 struct HliState {
   int64_t cycle = 0;
-  ChannelState channel_state = ChannelState::ready;
-  int64_t block_nr_r = 0;
-  int64_t block_count_r = 0;
-  int32_t stop_conditions_r = 0;
-  double dist_prog_start = 0;     // 0.1 um
-  double path_velocity = 0;       // mm/s
-  int32_t last_error_id = 0;
-  std::vector<std::string> axis_name;
-  std::vector<int64_t> axis_position_r;  // 0.1 um
-  ControlUnitState program_start;
-  ControlUnitState feedhold;
-  ControlUnitValueState override;
-  ControlUnitState delete_distance_to_go;
-  ControlUnitValueState delete_distance_to_go_activation;
-  bool delete_distance_to_go_active_r = false;  // a short cut runs (DDTG-4)
-  // An M function is output and the path waits for the PLC's
-  // acknowledgement (MVS_SVS); its number.
-  bool m_function_request_r = false;
-  int32_t m_function_nr_r = 0;
-  ControlUnitState backward_motion;  // state_r stays FALSE: never moving backward
+  HIL_RECORD(HliState, HLI_STATE_FIELDS)
 };
-
-// The control units' request_r / state_r and the state flags by their
-// TF5200 names ("delete_distance_to_go.state_r", "m_function_request_r"),
-// for scenarios; TRUE / FALSE read as 1 / 0. None: no such field.
-std::optional<int64_t> read_state_field(const HliState& state, const std::string& name);
-std::vector<std::string> state_field_names();
 
 // HLI length unit: 0.1 um.
 constexpr double hli_units_per_mm = 10000.0;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "config_error.hpp"
+#include "hli_names.hpp"
 
 namespace hil {
 namespace {
@@ -26,18 +27,21 @@ ChannelState channel_state_of(const YAML::Node& node, const std::string& where) 
   return state;
 }
 
-// The value a named HLI state field is compared with: true / false or a number.
-int64_t state_field_value(const std::string& key, const YAML::Node& node, const std::string& where) {
-  if (!read_state_field(HliState{}, key)) {
-    std::string known;
-    for (const std::string& name : state_field_names()) known += ", " + name;
-    throw ConfigError(where + ": unknown HLI field '" + key + "' (besides the named ones: " + known.substr(2) + ")");
-  }
+// A value for a named HLI field (hli_names.hpp): true / false or a whole
+// number the field's type holds (a UDINT 0 .. 2^32-1, a BOOL 0 or 1).
+template <typename Record>
+int64_t hli_field_value(const std::string& key, const YAML::Node& node, const std::string& where) {
+  const HliField<Record>* field = find_hli_field<Record>(key);
+  if (!field) throw ConfigError(where + ": unknown HLI field '" + key + "' (known: " + hli_field_names<Record>() + ")");
   bool flag = false;
-  if (YAML::convert<bool>::decode(node, flag)) return flag ? 1 : 0;
   int64_t value = 0;
-  if (YAML::convert<int64_t>::decode(node, value)) return value;
-  throw ConfigError(where + ": '" + key + "' takes true, false or a whole number");
+  if (YAML::convert<bool>::decode(node, flag)) value = flag ? 1 : 0;
+  else if (!YAML::convert<int64_t>::decode(node, value))
+    throw ConfigError(where + ": '" + key + "' takes true, false or a whole number, not '" +
+                      node.as<std::string>() + "'");
+  if (!field->holds(value))
+    throw ConfigError(where + ": '" + key + "' is " + field->type_text() + ", not " + node.as<std::string>());
+  return value;
 }
 
 Condition parse_condition(const YAML::Node& node, const std::string& where) {
@@ -57,19 +61,9 @@ Condition parse_condition(const YAML::Node& node, const std::string& where) {
     else if (key == "channel_state") c.channel_state = channel_state_of(item.second, where);
     else if (key == "delete_distance_to_go_active_r") c.delete_distance_to_go_active_r = item.second.as<bool>();
     else if (key == "m_function_nr_r") c.m_function_nr_r = item.second.as<int32_t>();
-    else c.fields[key] = state_field_value(key, item.second, where);
+    else c.fields[key] = hli_field_value<HliState>(key, item.second, where);
   }
   return c;
-}
-
-// true / false, or a whole number (override in 0.1 %).
-int32_t control_value(const YAML::Node& node, const std::string& where) {
-  bool flag = false;
-  if (YAML::convert<bool>::decode(node, flag)) return flag ? 1 : 0;
-  int32_t value = 0;
-  if (YAML::convert<int32_t>::decode(node, value)) return value;
-  throw ConfigError(where + ": a control unit field takes true, false or a whole number, not '" +
-                    node.as<std::string>() + "'");
 }
 
 TimelineStep parse_step(const YAML::Node& node, const std::string& where) {
@@ -78,8 +72,10 @@ TimelineStep parse_step(const YAML::Node& node, const std::string& where) {
   step.when = parse_condition(node["when"], where);
   const YAML::Node set = node["set"];
   if (!set || !set.IsMap()) throw ConfigError(where + ": 'set' must map control unit fields to values");
-  for (const auto& item : set)
-    step.set.push_back({item.first.as<std::string>(), control_value(item.second, where)});
+  for (const auto& item : set) {
+    const std::string key = item.first.as<std::string>();
+    step.set.push_back({key, hli_field_value<HliControl>(key, item.second, where)});
+  }
   return step;
 }
 
@@ -100,7 +96,7 @@ Expectation parse_expectation(const YAML::Node& node, const std::string& where) 
       for (const auto& axis : item.second)
         e.axis_position_mm[axis.first.as<std::string>()] = axis.second.as<double>();
     } else {
-      e.fields[key] = state_field_value(key, item.second, where);
+      e.fields[key] = hli_field_value<HliState>(key, item.second, where);
     }
   }
   return e;
@@ -152,7 +148,7 @@ bool Condition::holds(const HliState& s, double cycle_time_s) const {
     return false;
   if (m_function_nr_r && !(s.m_function_request_r && s.m_function_nr_r == *m_function_nr_r)) return false;
   for (const auto& [name, value] : fields)
-    if (read_state_field(s, name) != value) return false;
+    if (read_hli_field(s, name) != value) return false;
   return true;
 }
 

@@ -26,7 +26,7 @@ struct Condition {
   std::optional<ChannelState> channel_state;  // == value
   std::optional<bool> delete_distance_to_go_active_r;  // == value
   std::optional<int32_t> m_function_nr_r;     // this M function waits for acknowledgement
-  // Other HLI state fields by name (read_state_field), == value.
+  // Other HLI state fields by name (hli_names.hpp), == value.
   std::map<std::string, int64_t> fields;
 
   bool holds(const HliState& state, double cycle_time_s) const;
@@ -34,10 +34,11 @@ struct Condition {
 };
 
 // One write to a control unit field, e.g. "program_start.command_w": true
-// or "override.command_w": 500 (true / false are 1 / 0).
+// or "override.command_w": 500 (true / false are 1 / 0). The loader checks
+// the name and that the field's type holds the value (hli_names.hpp).
 struct ControlWrite {
   std::string field;
-  int32_t value = 0;
+  int64_t value = 0;
 };
 
 struct TimelineStep {
@@ -54,7 +55,7 @@ struct Expectation {
   std::optional<double> dist_prog_start_mm;
   std::optional<bool> delete_distance_to_go_active_r;
   std::map<std::string, double> axis_position_mm;
-  std::map<std::string, int64_t> fields;  // other HLI state fields (read_state_field)
+  std::map<std::string, int64_t> fields;  // other HLI state fields (hli_names.hpp)
   double tolerance_mm = 0.001;
 };
 

@@ -1,19 +1,42 @@
 #include "messages.hpp"
 
+#include <limits>
+#include <type_traits>
+
 namespace hil::lcm_support {
 namespace {
 
-// A control unit's fields between the HLI structs and the LCM types, either way.
-template <typename To, typename From>
-void copy_state(To& to, const From& from) {
-  to.request_r = from.request_r;
-  to.state_r = from.state_r;
+// Whether every value of From fits To (LCM has no unsigned types: a UDINT
+// is an int64_t in the .lcm); non-numbers must be the same type.
+template <typename From, typename To>
+constexpr bool holds_every_value() {
+  if constexpr (std::is_enum_v<From>) return holds_every_value<std::underlying_type_t<From>, To>();
+  else if constexpr (std::is_arithmetic_v<From> && std::is_arithmetic_v<To>)
+    return std::is_integral_v<From> == std::is_integral_v<To> &&
+           (std::is_signed_v<To> || !std::is_signed_v<From>) &&
+           std::numeric_limits<To>::digits >= std::numeric_limits<From>::digits;
+  else return std::is_same_v<From, To>;
 }
 
-template <typename To, typename From>
-void copy_control(To& to, const From& from) {
-  to.command_w = from.command_w;
-  to.enable_w = from.enable_w;
+// LCM arrays carry their length in a field of their own.
+template <typename Message>
+void set_lengths(Message&) {}
+void set_lengths(hil::hli_state_t& m) { m.n_axes = static_cast<int16_t>(m.axis_name.size()); }
+
+// Copies a record of the table (hli_table.hpp) to its LCM twin or back,
+// member by member, by name; records within recurse.
+template <typename From, typename To>
+void copy(const From& from, To& to) {
+  if constexpr (is_record_v<From>) {
+    From::template fields<To>([&](const char*, auto record, auto twin) { copy(from.*record, to.*twin); });
+    set_lengths(to);
+  } else if constexpr (is_record_v<To>) {
+    To::template fields<From>([&](const char*, auto record, auto twin) { copy(from.*twin, to.*record); });
+  } else {
+    static_assert(holds_every_value<From, To>() || holds_every_value<To, From>(),
+                  "an HLI field and its LCM twin must hold the same values: see common/hli_table.hpp");
+    to = static_cast<To>(from);  // towards the library: a value the library sent
+  }
 }
 
 }  // namespace
@@ -23,6 +46,7 @@ hil::event_t to_message(const Event& e, int64_t cycle, int64_t utime, const std:
   m.utime = utime;
   m.cycle = cycle;
   m.severity = static_cast<int8_t>(e.severity);
+  m.verdict = static_cast<int8_t>(e.verdict);
   m.id = e.id;
   m.parameter = e.parameter;
   m.source = source;
@@ -37,56 +61,21 @@ hil::event_t to_message(const Event& e, int64_t cycle, int64_t utime, const std:
 
 Event from_message(const hil::event_t& m) {
   return {static_cast<Severity>(m.severity), m.id, m.parameter, m.axis, m.nc_line, m.block_nr,
-          m.value, m.limit, m.message};
+          m.value, m.limit, m.message, static_cast<Verdict>(m.verdict)};
 }
 
 hil::hli_state_t to_message(const HliState& s, int64_t utime) {
   hil::hli_state_t m;
   m.utime = utime;
   m.cycle = s.cycle;
-  m.channel_state = static_cast<int8_t>(s.channel_state);
-  m.block_nr_r = s.block_nr_r;
-  m.block_count_r = s.block_count_r;
-  m.stop_conditions_r = s.stop_conditions_r;
-  m.dist_prog_start = s.dist_prog_start;
-  m.path_velocity = s.path_velocity;
-  m.last_error_id = s.last_error_id;
-  m.n_axes = static_cast<int16_t>(s.axis_name.size());
-  m.axis_name = s.axis_name;
-  m.axis_position_r = s.axis_position_r;
-  copy_state(m.program_start, s.program_start);
-  copy_state(m.feedhold, s.feedhold);
-  copy_state(m.override, s.override);
-  copy_state(m.delete_distance_to_go, s.delete_distance_to_go);
-  copy_state(m.delete_distance_to_go_activation, s.delete_distance_to_go_activation);
-  m.delete_distance_to_go_active_r = s.delete_distance_to_go_active_r;
-  m.m_function_request_r = s.m_function_request_r;
-  m.m_function_nr_r = s.m_function_nr_r;
-  copy_state(m.backward_motion, s.backward_motion);
+  copy(s, m);
   return m;
 }
 
 HliState from_message(const hil::hli_state_t& m) {
   HliState s;
   s.cycle = m.cycle;
-  s.channel_state = static_cast<ChannelState>(m.channel_state);
-  s.block_nr_r = m.block_nr_r;
-  s.block_count_r = m.block_count_r;
-  s.stop_conditions_r = m.stop_conditions_r;
-  s.dist_prog_start = m.dist_prog_start;
-  s.path_velocity = m.path_velocity;
-  s.last_error_id = m.last_error_id;
-  s.axis_name = m.axis_name;
-  s.axis_position_r = m.axis_position_r;
-  copy_state(s.program_start, m.program_start);
-  copy_state(s.feedhold, m.feedhold);
-  copy_state(s.override, m.override);
-  copy_state(s.delete_distance_to_go, m.delete_distance_to_go);
-  copy_state(s.delete_distance_to_go_activation, m.delete_distance_to_go_activation);
-  s.delete_distance_to_go_active_r = m.delete_distance_to_go_active_r;
-  s.m_function_request_r = m.m_function_request_r;
-  s.m_function_nr_r = m.m_function_nr_r;
-  copy_state(s.backward_motion, m.backward_motion);
+  copy(m, s);
   return s;
 }
 
@@ -94,26 +83,14 @@ hil::hli_control_t to_message(const HliControl& c, int64_t utime) {
   hil::hli_control_t m;
   m.utime = utime;
   m.cycle = c.cycle;
-  copy_control(m.program_start, c.program_start);
-  copy_control(m.feedhold, c.feedhold);
-  copy_control(m.override, c.override);
-  copy_control(m.delete_distance_to_go, c.delete_distance_to_go);
-  copy_control(m.delete_distance_to_go_activation, c.delete_distance_to_go_activation);
-  copy_control(m.m_function_ack, c.m_function_ack);
-  copy_control(m.backward_motion, c.backward_motion);
+  copy(c, m);
   return m;
 }
 
 HliControl from_message(const hil::hli_control_t& m) {
   HliControl c;
   c.cycle = m.cycle;
-  copy_control(c.program_start, m.program_start);
-  copy_control(c.feedhold, m.feedhold);
-  copy_control(c.override, m.override);
-  copy_control(c.delete_distance_to_go, m.delete_distance_to_go);
-  copy_control(c.delete_distance_to_go_activation, m.delete_distance_to_go_activation);
-  copy_control(c.m_function_ack, m.m_function_ack);
-  copy_control(c.backward_motion, m.backward_motion);
+  copy(m, c);
   return c;
 }
 

@@ -15,6 +15,7 @@
 
 #include "channels.hpp"
 #include "config_error.hpp"
+#include "messages.hpp"
 
 namespace hil::logger {
 namespace {
@@ -50,8 +51,7 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       LoggedEvent le;
       le.cycle = m.cycle;
       le.source = m.source;
-      le.event = {static_cast<Severity>(m.severity), m.id, m.parameter, m.axis, m.nc_line, m.block_nr,
-                  m.value, m.limit, m.message};
+      le.event = lcm_support::from_message(m);
       log.events.push_back(le);
     } else if (e->channel == channels::hli_state) {
       hil::hli_state_t m;

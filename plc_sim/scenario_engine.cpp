@@ -3,8 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "config_error.hpp"
-#include "hli_client.hpp"
+#include "hli_names.hpp"
 
 namespace hil::plc {
 
@@ -13,19 +12,6 @@ ScenarioEngine::ScenarioEngine(const Scenario& scenario)
       expected_events_(scenario.expected_events), allow_errors_(scenario.allow_errors),
       m_function_ack_cycles_(scenario.m_function_ack_cycles),
       cycle_time_s_(scenario.machine.cycle_time_s()) {
-  for (size_t i = 0; i < timeline_.size(); ++i)
-    for (const ControlWrite& write : timeline_[i].set) {
-      const std::string where = "plc.timeline[" + std::to_string(i) + "]: ";
-      HliControl probe;
-      if (!write_control_field(probe, write.field, 0)) {  // every field takes 0
-        std::string known;
-        for (const auto& name : control_field_names()) known += ", " + name;
-        throw ConfigError(where + "unknown HLI field '" + write.field + "' (known: " + known.substr(2) + ")");
-      }
-      if (!write_control_field(probe, write.field, write.value))
-        throw ConfigError(where + "HLI field '" + write.field + "' is boolean: true or false, not " +
-                          std::to_string(write.value));
-    }
   for (const Expectation& e : scenario.expectations) pending_.push_back({e, false, {}});
 }
 
@@ -46,7 +32,7 @@ const HliControl& ScenarioEngine::cycle(const HliState& state) {
   for (size_t i = 0; i < timeline_.size(); ++i) {
     if (fired_[i] || !timeline_[i].when.holds(state, cycle_time_s_)) continue;
     fired_[i] = true;
-    for (const ControlWrite& write : timeline_[i].set) write_control_field(control_, write.field, write.value);
+    for (const ControlWrite& write : timeline_[i].set) write_hli_field(control_, write.field, write.value);
   }
   for (Pending& p : pending_) {
     if (p.reached || !p.expectation.when.holds(state, cycle_time_s_)) continue;
@@ -83,7 +69,7 @@ ExpectationResult ScenarioEngine::evaluate(const Expectation& e, const HliState&
     check(s.delete_distance_to_go_active_r == *e.delete_distance_to_go_active_r,
           std::string("delete_distance_to_go_active_r ") + (s.delete_distance_to_go_active_r ? "true" : "false"));
   for (const auto& [name, expected] : e.fields) {
-    const int64_t value = read_state_field(s, name).value_or(0);
+    const int64_t value = read_hli_field(s, name).value_or(0);
     check(value == expected, name + " " + std::to_string(value) + " != " + std::to_string(expected));
   }
   for (const auto& [axis, expected] : e.axis_position_mm) {

@@ -18,7 +18,7 @@ struct ExpectationResult {
 
 class ScenarioEngine {
  public:
-  // Throws ConfigError if the timeline writes a field the HLI does not have.
+  // The scenario's field names and values were checked when it was read.
   explicit ScenarioEngine(const Scenario& scenario);
 
   // One PLC cycle on the CNC's HLI state; returns the control to write back.

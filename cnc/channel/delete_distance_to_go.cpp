@@ -28,7 +28,7 @@ bool DeleteDistanceToGo::apply(const HliControl& control, bool channel_active, H
     }
   }
   // The end marker mask, in force from the next short cut on.
-  const ControlUnitValue& activation = control.delete_distance_to_go_activation;
+  const ControlUnitUns32& activation = control.delete_distance_to_go_activation;
   activation_enabled_ = activation.enable_w;
   activation_ = activation.enable_w ? activation.command_w : 0;
   return changed;
@@ -57,7 +57,7 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::forward_short_cut(PathInterpolat
   // the stop position, before the short cut (DDTG-7).
   const std::vector<Block>& blocks = path.blocks();
   BlockCursors& cursors = path.cursors();
-  const uint32_t mask = static_cast<uint32_t>(activation_);
+  const uint32_t mask = activation_;
   const ShortCutTarget found = short_cut_target(blocks, stop.block, mask);
   cursors.next_to_run = std::max(cursors.next_to_run, stop.block + 1);  // after backward motion: ran already
   const std::string here = "delete distance to go in line " + std::to_string(events.nc_line());

@@ -58,7 +58,7 @@ class DeleteDistanceToGo {
   size_t target_ = 0;   // while a short cut runs: the block it goes to
   bool rapid_ = false;  // the running short cut is G00 (DDTG-2)
   bool activation_enabled_ = false;
-  int32_t activation_ = 0;  // end marker mask in force (DDTG-5)
+  uint32_t activation_ = 0;  // end marker mask in force (DDTG-5), a UDINT
 };
 
 }  // namespace hil::cnc

@@ -26,7 +26,7 @@ struct Sample {
 // `edges` and holds it `hold` cycles (long enough for the stop, unless a
 // test clears it early).
 std::vector<Sample> run_with_ddtg(const std::string& program, std::vector<int64_t> edges, int64_t hold,
-                                  std::vector<Event>* events = nullptr, int32_t activation = 0) {
+                                  std::vector<Event>* events = nullptr, uint32_t activation = 0) {
   const MachineConfig m = test::xyz_machine();
   Channel channel(m, program);
   logger::LimitChecker checker(m);
@@ -181,7 +181,7 @@ TEST_CASE("DDTG-5 with an activation mask the short cut goes to the first valid 
       "N061 #DEL DIST2GO [END=2]\nN070 Y60\nN071 #DEL DIST2GO [END='16#0105']\nN080 X200\n"
       "N081 #DEL DIST2GO [END=8]\nN090 Y100\nM30\n";
   struct Case {
-    int32_t activation;
+    uint32_t activation;
     double x, y;  // where the short cut goes
     int64_t block_nr;
   };

@@ -1,29 +1,12 @@
 // RIG-2, KRN-4: the nodes' translation between library values and LCM
 // messages loses no field, including through LCM's own encoding.
-// g++ 12 inlines lcm-gen's decode() here and sees a false
-// -Wmaybe-uninitialized on its hash (set whenever decoding succeeded).
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <catch2/catch.hpp>
-
-#include <vector>
+#include "wire.hpp"
 
 #include "channels.hpp"
 #include "messages.hpp"
 
 using namespace hil;
-
-namespace {
-
-template <typename Message>
-Message through_the_wire(const Message& m) {
-  std::vector<uint8_t> bytes(m.getEncodedSize());
-  REQUIRE(m.encode(bytes.data(), 0, static_cast<int>(bytes.size())) == static_cast<int>(bytes.size()));
-  Message back;
-  REQUIRE(back.decode(bytes.data(), 0, static_cast<int>(bytes.size())) == static_cast<int>(bytes.size()));
-  return back;
-}
-
-}  // namespace
+using test::through_the_wire;
 
 TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[messages]") {
   HliState s;
@@ -118,6 +101,22 @@ TEST_CASE("KRN-2 messages: an event keeps its ID, parameter, NC line, block and 
   CHECK(f.value == 3100.5);
   CHECK(f.limit == 3000);
   CHECK(f.message == e.message);
+  CHECK(f.verdict == Verdict::none);
+}
+
+TEST_CASE("RIG-5 KRN-4 messages: an expectation's verdict is a field of the event, PASS or FAIL", "[messages]") {
+  for (Verdict verdict : {Verdict::none, Verdict::pass, Verdict::fail}) {
+    Event e;
+    e.severity = verdict == Verdict::fail ? Severity::error : Severity::info;
+    e.verdict = verdict;
+    e.message = "at program_end: all checks hold";  // the text says nothing of it
+    const hil::event_t m = through_the_wire(lcm_support::to_message(e, 3, 3000, "plc_sim"));
+    CHECK(m.verdict == static_cast<int8_t>(verdict));
+    CHECK(lcm_support::from_message(m).verdict == verdict);
+  }
+  CHECK(hil::event_t::VERDICT_NONE == static_cast<int8_t>(Verdict::none));
+  CHECK(hil::event_t::VERDICT_PASS == static_cast<int8_t>(Verdict::pass));
+  CHECK(hil::event_t::VERDICT_FAIL == static_cast<int8_t>(Verdict::fail));
 }
 
 TEST_CASE("RIG-2 channels: the axis of an axis channel name, the inverse of axis_command / axis_state", "[messages]") {

@@ -55,8 +55,8 @@ plc:
 }
 
 TEST_CASE("RIG-5 scenario: unknown HLI fields and triggers are refused with their place", "[scenario]") {
-  const Scenario s = scenario("plc:\n  timeline:\n    - when: {cycle: 1}\n      set: {feed_hold.command_w: true}\n");
-  CHECK_THROWS_WITH(plc::ScenarioEngine(s), Catch::Contains("plc.timeline[0]: unknown HLI field 'feed_hold.command_w'"));
+  CHECK_THROWS_WITH(scenario("plc:\n  timeline:\n    - when: {cycle: 1}\n      set: {feed_hold.command_w: true}\n"),
+                    Catch::Contains("plc.timeline[0]: unknown HLI field 'feed_hold.command_w'"));
   CHECK_THROWS_WITH(scenario("plc:\n  timeline:\n    - when: {velocity: 1}\n      set: {}\n"),
                     Catch::Contains("unknown HLI field 'velocity'"));
   CHECK_THROWS_WITH(scenario("expect:\n  - when: program_end\n    axis_position_mm: {Q: 1}\n"),
