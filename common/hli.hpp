@@ -19,12 +19,27 @@ const char* to_string(ChannelState state);
 bool parse_channel_state(const std::string& text, ChannelState& state);
 
 // HLI_SC_* bits of stop_conditions_r (TF5200_insert_stop_cmd.txt, table of
-// stop conditions); only the ones the channel sets so far.
+// stop conditions). The channel sets FEEDHOLD, PLC_ACKNOWLEDGE and
+// WAIT_TECHNO_ACK (an M function waits), OVERRIDE_ZERO, DELAY_TIME,
+// IPO_INPUT_EMPTY and CHANNEL_ERROR (cnc/channel/path_hold.cpp).
 namespace stop_condition {
-constexpr int32_t feedhold = 0x0001;          // HLI_SC_FEEDHOLD
-constexpr int32_t override_zero = 0x0040;     // HLI_SC_OVERRIDE_ZERO
-constexpr int32_t ipo_input_empty = 0x1000;   // HLI_SC_IPO_INPUT_EMPTY
-constexpr int32_t channel_error = 0x00010000;  // HLI_SC_CHANNEL_ERROR
+constexpr int32_t feedhold = 0x0001;               // HLI_SC_FEEDHOLD: path feed stop
+constexpr int32_t vfg = 0x0002;                    // HLI_SC_VFG: no axis-specific feed enable
+constexpr int32_t single_block = 0x0004;           // HLI_SC_SINGLE_BLOCK
+constexpr int32_t m00_or_m01 = 0x0010;             // HLI_SC_M00_OR_M01
+constexpr int32_t plc_acknowledge = 0x0020;        // HLI_SC_PLC_ACKNOWLEDGE: waiting for the PLC's acknowledgement
+constexpr int32_t override_zero = 0x0040;          // HLI_SC_OVERRIDE_ZERO
+constexpr int32_t override_rapid_zero = 0x0080;    // HLI_SC_OVERRIDE_RAPID_ZERO
+constexpr int32_t delay_time = 0x0200;             // HLI_SC_DELAY_TIME: dwell
+constexpr int32_t channel_sync = 0x0800;           // HLI_SC_CHANNEL_SYNC
+constexpr int32_t ipo_input_empty = 0x1000;        // HLI_SC_IPO_INPUT_EMPTY
+constexpr int32_t ipo_input_disabled = 0x2000;     // HLI_SC_IPO_INPUT_DISABLED
+constexpr int32_t wait_for_axes = 0x8000;          // HLI_SC_WAIT_FOR_AXES
+constexpr int32_t channel_error = 0x00010000;      // HLI_SC_CHANNEL_ERROR
+constexpr int32_t wait_techno_ack = 0x00020000;    // HLI_SC_WAIT_TECHNO_ACK: M/H/ST function acknowledgement
+constexpr int32_t m0_stop = 0x02000000;            // HLI_SC_M0_STOP
+constexpr int32_t m1_stop = 0x04000000;            // HLI_SC_M1_STOP
+constexpr int32_t insert_stop_at_dist = 0x08000000;  // HLI_SC_INSERT_STOP_AT_DIST
 }  // namespace stop_condition
 
 // The control unit types (HLI_CONTROL_UNIT_FIELDS / HLI_STATE_UNIT_FIELDS),

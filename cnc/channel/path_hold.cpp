@@ -12,6 +12,8 @@ int32_t PathHold::stop_conditions() const {
   int32_t bits = 0;
   if (holds(HoldReason::feedhold)) bits |= stop_condition::feedhold;
   if (holds(HoldReason::channel_error)) bits |= stop_condition::channel_error;
+  if (holds(HoldReason::m_function_ack)) bits |= stop_condition::plc_acknowledge | stop_condition::wait_techno_ack;
+  if (holds(HoldReason::dwell)) bits |= stop_condition::delay_time;
   return bits;
 }
 

@@ -12,8 +12,8 @@ enum class HoldReason : uint8_t {
   feedhold,           // feed hold in force (HLI_SC_FEEDHOLD)
   short_cut_pending,  // delete distance to go: stopping for the short cut (DDTG-1)
   channel_error,      // error stop (HLI_SC_CHANNEL_ERROR)
-  m_function_ack,     // an M function waits for the PLC's acknowledgement (MVS_SVS)
-  dwell,              // #TIME
+  m_function_ack,     // an M function waits for the PLC's acknowledgement, MVS_SVS (HLI_SC_PLC_ACKNOWLEDGE, HLI_SC_WAIT_TECHNO_ACK)
+  dwell,              // #TIME (HLI_SC_DELAY_TIME)
   direction_change,   // backward motion requested the other way (KRN-5)
   count
 };

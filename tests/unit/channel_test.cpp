@@ -106,3 +106,31 @@ TEST_CASE("KRN-2 channel: after a decode error the channel runs the good blocks,
   CHECK(channel.setpoints()[0].position == 10);
   CHECK(channel.setpoints()[1].position == 5);
 }
+
+TEST_CASE("KRN-4 stop_conditions_r: PLC_ACKNOWLEDGE and WAIT_TECHNO_ACK while an M function waits, DELAY_TIME in a dwell",
+          "[channel]") {
+  Channel channel(test::xyz_machine(), "N10 G1 X10 F3000\nN20 M48\nN30 #TIME 0.2\nN40 X20\nM30\n");
+  const int32_t waiting = stop_condition::plc_acknowledge | stop_condition::wait_techno_ack;
+  int64_t acknowledged_at = -1, waiting_cycles = 0, dwell_cycles = 0, moving_cycles = 0;
+  run_program(channel, nullptr, [&](int64_t k, const HliState& s, HliControl& c) {
+    c.m_function_ack.enable_w = true;
+    c.m_function_ack.command_w = s.m_function_request_r && k % 50 == 0;  // acknowledges late
+    if (s.m_function_request_r) {
+      CHECK((s.stop_conditions_r & waiting) == waiting);
+      CHECK((s.stop_conditions_r & stop_condition::delay_time) == 0);
+      ++waiting_cycles;
+      if (c.m_function_ack.command_w) acknowledged_at = k;
+    } else if ((s.stop_conditions_r & stop_condition::delay_time) != 0) {
+      CHECK((s.stop_conditions_r & waiting) == 0);
+      ++dwell_cycles;
+    } else if (s.path_velocity > 0) {
+      CHECK(s.stop_conditions_r == 0);
+      ++moving_cycles;
+    }
+  });
+  CHECK(acknowledged_at > 0);
+  CHECK(waiting_cycles >= 2);
+  CHECK(dwell_cycles == Approx(200).margin(2));
+  CHECK(moving_cycles > 100);
+  CHECK(channel.hli().channel_state == ChannelState::program_end);
+}
