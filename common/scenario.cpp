@@ -1,7 +1,13 @@
 #include "scenario.hpp"
 
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include "config_error.hpp"
@@ -12,17 +18,73 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text_file(const fs::path& path) {
+// The keys each mapping of a scenario may have (docs/SCENARIOS.md); any
+// other is refused (ConfigMap). Triggers and expectations also take the
+// HLI state fields by name (hli_names.hpp).
+const std::vector<std::string> scenario_keys = {"name", "description", "requirements", "machine", "nc_program",
+                                                "nc_file", "run", "plc", "expect", "expect_events",
+                                                "expect_violations"};
+const std::vector<std::string> run_keys = {"max_time_s", "settle_time_s", "allow_errors"};
+const std::vector<std::string> plc_keys = {"timeline", "m_function_ack_cycles"};
+const std::vector<std::string> step_keys = {"when", "set"};
+const std::vector<std::string> event_keys = {"id", "parameter", "severity", "nc_line", "count_min", "absent"};
+const std::vector<std::string> violation_keys = {"axis", "quantity"};
+
+// `keys` and the fields of Record not among them (a key's own meaning wins).
+template <typename Record>
+std::vector<std::string> with_hli_fields(std::vector<std::string> keys) {
+  for (const HliField<Record>& field : hli_fields<Record>())
+    if (std::find(keys.begin(), keys.end(), field.name) == keys.end()) keys.push_back(field.name);
+  return keys;
+}
+const std::vector<std::string>& condition_keys() {
+  static const std::vector<std::string> keys = with_hli_fields<HliState>(
+      {"cycle", "time_s", "block_nr_r", "block_count_r", "dist_prog_start_mm", "channel_state",
+       "delete_distance_to_go_active_r", "m_function_nr_r"});
+  return keys;
+}
+const std::vector<std::string>& expectation_keys() {
+  static const std::vector<std::string> keys = with_hli_fields<HliState>(
+      {"when", "channel_state", "block_nr_r", "block_count_r", "dist_prog_start_mm", "tolerance_mm",
+       "delete_distance_to_go_active_r", "axis_position_mm"});
+  return keys;
+}
+const std::vector<std::string>& control_keys() {
+  static const std::vector<std::string> keys = with_hli_fields<HliControl>({});
+  return keys;
+}
+
+constexpr int64_t int32_max = std::numeric_limits<int32_t>::max();
+constexpr int64_t int64_max = std::numeric_limits<int64_t>::max();
+// Simulated seconds: the cycle count and the rig's wall-clock bound
+// (20 s a simulated second) stay far inside 64 bits.
+constexpr double max_run_time_s = 1e6;
+
+// A file's text; a directory or a missing file is named as such (an
+// ifstream "reads" a directory as empty: an NC program of no blocks).
+std::string read_text_file(const fs::path& path, const std::string& what) {
+  std::error_code error;
+  if (!fs::exists(path, error)) throw ConfigError(path.string() + ": no such " + what);
+  if (fs::is_directory(path, error)) throw ConfigError(path.string() + ": " + what + " is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw ConfigError("cannot read " + path.string());
+  if (!in) throw ConfigError(path.string() + ": cannot read the " + what + " (" + std::strerror(errno) + ")");
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
 }
 
+YAML::Node load_yaml_file(const fs::path& path, const std::string& what) {
+  const std::string text = read_text_file(path, what);
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path.string() + ": " + e.what());
+  }
+}
+
 ChannelState channel_state_of(const YAML::Node& node, const std::string& where) {
   ChannelState state{};
-  if (!parse_channel_state(node.as<std::string>(), state))
+  if (!parse_channel_state(config_text(node, where), state))
     throw ConfigError(where + ": channel_state must be READY, ACTIVE, PROGRAM_END or ERROR");
   return state;
 }
@@ -32,69 +94,81 @@ ChannelState channel_state_of(const YAML::Node& node, const std::string& where) 
 template <typename Record>
 int64_t hli_field_value(const std::string& key, const YAML::Node& node, const std::string& where) {
   const HliField<Record>* field = find_hli_field<Record>(key);
-  if (!field) throw ConfigError(where + ": unknown HLI field '" + key + "' (known: " + hli_field_names<Record>() + ")");
+  if (!field) throw unknown_key(where, key, with_hli_fields<Record>({}), "HLI field");
   bool flag = false;
   int64_t value = 0;
+  if (!node.IsScalar()) throw ConfigError(where + ": '" + key + "' takes true, false or a whole number");
   if (YAML::convert<bool>::decode(node, flag)) value = flag ? 1 : 0;
   else if (!YAML::convert<int64_t>::decode(node, value))
-    throw ConfigError(where + ": '" + key + "' takes true, false or a whole number, not '" +
-                      node.as<std::string>() + "'");
+    throw ConfigError(where + ": '" + key + "' takes true, false or a whole number, not '" + node.Scalar() + "'");
   if (!field->holds(value))
-    throw ConfigError(where + ": '" + key + "' is " + field->type_text() + ", not " + node.as<std::string>());
+    throw ConfigError(where + ": '" + key + "' is " + field->type_text() + ", not " + node.Scalar());
   return value;
 }
 
+// Block numbers (N) and program lines: UDINT in the TF5200 texts, kept in 64 bits.
+int64_t block_number(const ConfigMap& m, const std::string& key) { return m.whole(key, 0, int64_max); }
+
 Condition parse_condition(const YAML::Node& node, const std::string& where) {
   Condition c;
-  if (node.IsScalar() && node.as<std::string>() == "program_end") {
+  if (node.IsScalar() && node.Scalar() == "program_end") {
     c.channel_state = ChannelState::program_end;
     return c;
   }
   if (!node.IsMap()) throw ConfigError(where + ": 'when' must be a mapping or 'program_end'");
+  const ConfigMap m(node, where, condition_keys());
   for (const auto& item : node) {
-    const std::string key = item.first.as<std::string>();
-    if (key == "cycle") c.cycle = item.second.as<int64_t>();
-    else if (key == "time_s") c.time_s = item.second.as<double>();
-    else if (key == "block_nr_r") c.block_nr_r = item.second.as<int64_t>();
-    else if (key == "block_count_r") c.block_count_r = item.second.as<int64_t>();
-    else if (key == "dist_prog_start_mm") c.dist_prog_start_mm = item.second.as<double>();
-    else if (key == "channel_state") c.channel_state = channel_state_of(item.second, where);
-    else if (key == "delete_distance_to_go_active_r") c.delete_distance_to_go_active_r = item.second.as<bool>();
-    else if (key == "m_function_nr_r") c.m_function_nr_r = item.second.as<int32_t>();
+    const std::string key = item.first.Scalar();
+    if (key == "cycle") c.cycle = m.whole(key, 0, int64_max);
+    else if (key == "time_s") c.time_s = m.number(key, non_negative);
+    else if (key == "block_nr_r") c.block_nr_r = block_number(m, key);
+    else if (key == "block_count_r") c.block_count_r = block_number(m, key);
+    else if (key == "dist_prog_start_mm") c.dist_prog_start_mm = m.number(key);
+    else if (key == "channel_state") c.channel_state = channel_state_of(item.second, m.path(key));
+    else if (key == "delete_distance_to_go_active_r")
+      c.delete_distance_to_go_active_r = config_bool(item.second, m.path(key));
+    else if (key == "m_function_nr_r") c.m_function_nr_r = static_cast<int32_t>(m.whole(key, 0, int32_max));
     else c.fields[key] = hli_field_value<HliState>(key, item.second, where);
   }
   return c;
 }
 
 TimelineStep parse_step(const YAML::Node& node, const std::string& where) {
+  const ConfigMap m(node, where, step_keys);
   TimelineStep step;
-  if (!node["when"]) throw ConfigError(where + ": 'when' is missing");
-  step.when = parse_condition(node["when"], where);
-  const YAML::Node set = node["set"];
-  if (!set || !set.IsMap()) throw ConfigError(where + ": 'set' must map control unit fields to values");
-  for (const auto& item : set) {
-    const std::string key = item.first.as<std::string>();
+  if (!m.has("when")) throw ConfigError(where + ": 'when' is missing");
+  step.when = parse_condition(m["when"], m.path("when"));
+  if (!m.has("set") || !m["set"].IsMap()) throw ConfigError(where + ": 'set' must map control unit fields to values");
+  const ConfigMap fields(m["set"], m.path("set"), control_keys(), "HLI field");  // refuses unknown fields
+  for (const auto& item : m["set"]) {
+    const std::string key = item.first.Scalar();
     step.set.push_back({key, hli_field_value<HliControl>(key, item.second, where)});
   }
   return step;
 }
 
 Expectation parse_expectation(const YAML::Node& node, const std::string& where) {
+  const ConfigMap m(node, where, expectation_keys());
   Expectation e;
-  if (!node["when"]) throw ConfigError(where + ": 'when' is missing");
-  e.when = parse_condition(node["when"], where);
+  if (!m.has("when")) throw ConfigError(where + ": 'when' is missing");
+  e.when = parse_condition(m["when"], m.path("when"));
   for (const auto& item : node) {
-    const std::string key = item.first.as<std::string>();
+    const std::string key = item.first.Scalar();
     if (key == "when") continue;
-    if (key == "channel_state") e.channel_state = channel_state_of(item.second, where);
-    else if (key == "block_nr_r") e.block_nr_r = item.second.as<int64_t>();
-    else if (key == "block_count_r") e.block_count_r = item.second.as<int64_t>();
-    else if (key == "dist_prog_start_mm") e.dist_prog_start_mm = item.second.as<double>();
-    else if (key == "tolerance_mm") e.tolerance_mm = item.second.as<double>();
-    else if (key == "delete_distance_to_go_active_r") e.delete_distance_to_go_active_r = item.second.as<bool>();
+    if (key == "channel_state") e.channel_state = channel_state_of(item.second, m.path(key));
+    else if (key == "block_nr_r") e.block_nr_r = block_number(m, key);
+    else if (key == "block_count_r") e.block_count_r = block_number(m, key);
+    else if (key == "dist_prog_start_mm") e.dist_prog_start_mm = m.number(key);
+    else if (key == "tolerance_mm") e.tolerance_mm = m.number(key, non_negative);
+    else if (key == "delete_distance_to_go_active_r")
+      e.delete_distance_to_go_active_r = config_bool(item.second, m.path(key));
     else if (key == "axis_position_mm") {
-      for (const auto& axis : item.second)
-        e.axis_position_mm[axis.first.as<std::string>()] = axis.second.as<double>();
+      if (!item.second.IsMap()) throw ConfigError(m.path(key) + ": must map axis names to positions in mm");
+      for (const auto& axis : item.second) {
+        const std::string name = config_text(axis.first, m.path(key));
+        if (e.axis_position_mm.count(name)) throw ConfigError(key_path(m.path(key), name) + ": given twice");
+        e.axis_position_mm[name] = config_number(axis.second, key_path(m.path(key), name));
+      }
     } else {
       e.fields[key] = hli_field_value<HliState>(key, item.second, where);
     }
@@ -103,35 +177,41 @@ Expectation parse_expectation(const YAML::Node& node, const std::string& where) 
 }
 
 EventExpectation parse_event_expectation(const YAML::Node& node, const std::string& where) {
+  const ConfigMap m(node, where, event_keys);
   EventExpectation e;
-  if (!node["id"] && !node["parameter"]) throw ConfigError(where + ": give 'id' and/or 'parameter'");
-  if (node["id"]) e.id = node["id"].as<int32_t>();
-  if (node["parameter"]) e.parameter = node["parameter"].as<std::string>();
-  if (node["severity"]) {
-    const std::string s = node["severity"].as<std::string>();
-    if (s == "warning") e.severity = Severity::warning;
-    else if (s == "error") e.severity = Severity::error;
-    else if (s == "info") e.severity = Severity::info;
-    else throw ConfigError(where + ": severity must be info, warning or error");
+  if (!m.has("id") && !m.has("parameter")) throw ConfigError(where + ": give 'id' and/or 'parameter'");
+  if (m.has("id")) e.id = static_cast<int32_t>(m.whole("id", 0, int32_max));
+  m.get("parameter", e.parameter);
+  std::string severity;
+  if (m.get("severity", severity)) {
+    if (severity == "warning") e.severity = Severity::warning;
+    else if (severity == "error") e.severity = Severity::error;
+    else if (severity == "info") e.severity = Severity::info;
+    else throw ConfigError(m.path("severity") + ": must be info, warning or error, not " + severity);
   }
-  if (node["nc_line"]) e.nc_line = node["nc_line"].as<int64_t>();
-  if (node["count_min"]) e.count_min = node["count_min"].as<int>();
-  if (node["absent"]) e.absent = node["absent"].as<bool>();
+  m.get("nc_line", e.nc_line, 0);
+  m.get("count_min", e.count_min, 0);
+  m.get("absent", e.absent);
+  // absent ignores count_min: both given is a contradiction, not a check.
+  if (e.absent && m.has("count_min")) throw ConfigError(where + ": give 'count_min' or 'absent: true', not both");
   return e;
 }
 
 ViolationExpectation parse_violation_expectation(const YAML::Node& node, const std::string& where) {
-  if (!node["axis"] || !node["quantity"]) throw ConfigError(where + ": give 'axis' and 'quantity'");
-  return {node["axis"].as<std::string>(), node["quantity"].as<std::string>()};
+  const ConfigMap m(node, where, violation_keys);
+  if (!m.has("axis") || !m.has("quantity")) throw ConfigError(where + ": give 'axis' and 'quantity'");
+  ViolationExpectation v{m.text("axis"), m.text("quantity")};
+  // An empty part is a part of every quantity: it would excuse any violation of the axis.
+  if (v.quantity.empty()) throw ConfigError(m.path("quantity") + ": must not be empty");
+  return v;
 }
 
 template <typename T, typename Parse>
 std::vector<T> parse_list(const YAML::Node& node, const std::string& name, Parse parse) {
   std::vector<T> items;
   if (!node) return items;
-  if (!node.IsSequence()) throw ConfigError(name + " must be a list");
-  for (size_t i = 0; i < node.size(); ++i)
-    items.push_back(parse(node[i], name + "[" + std::to_string(i) + "]"));
+  if (!node.IsSequence()) throw ConfigError(name + ": must be a list");
+  for (size_t i = 0; i < node.size(); ++i) items.push_back(parse(node[i], index_path(name, i)));
   return items;
 }
 
@@ -168,74 +248,122 @@ std::string Condition::describe() const {
   return out.str();
 }
 
-Scenario parse_scenario(const YAML::Node& root) {
-  if (!root.IsMap()) throw ConfigError("scenario: expected a mapping at the top");
-  Scenario s;
-  try {
-    s.name = root["name"] ? root["name"].as<std::string>() : "scenario";
-    if (root["description"]) s.description = root["description"].as<std::string>();
-    if (root["requirements"])
-      for (const auto& r : root["requirements"]) s.requirements.push_back(r.as<std::string>());
-    if (!root["machine"] || !root["machine"].IsMap())
-      throw ConfigError("scenario: 'machine' (a mapping or a file name) is missing");
-    s.machine = parse_machine_config(root["machine"]);
-    if (!root["nc_program"]) throw ConfigError("scenario: 'nc_program' or 'nc_file' is missing");
-    s.nc_program = root["nc_program"].as<std::string>();
-    if (const YAML::Node run = root["run"]) {
-      if (run["max_time_s"]) s.max_time_s = run["max_time_s"].as<double>();
-      if (run["settle_time_s"]) s.settle_time_s = run["settle_time_s"].as<double>();
-      if (run["allow_errors"]) s.allow_errors = run["allow_errors"].as<bool>();
+std::string nc_text_problem(const std::string& text) {
+  size_t line = 1;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte == '\n') ++line;
+    // Bytes >= 0x80 pass: comments in UTF-8 or Latin-1 are text.
+    if ((byte < 0x20 && byte != '\n' && byte != '\r' && byte != '\t') || byte == 0x7f) {
+      char code[8];
+      std::snprintf(code, sizeof code, "0x%02X", byte);
+      return "line " + std::to_string(line) + ": byte " + code + (byte == 0 ? " (NUL)" : "") +
+             " is not text: an NC program is a text file";
     }
-    if (!(s.max_time_s > 0)) throw ConfigError("scenario: run.max_time_s must be > 0");
-    if (s.settle_time_s < 0) throw ConfigError("scenario: run.settle_time_s must be >= 0");
-    const YAML::Node plc = root["plc"];
-    if (plc) s.timeline = parse_list<TimelineStep>(plc["timeline"], "plc.timeline", parse_step);
-    if (plc && plc["m_function_ack_cycles"]) s.m_function_ack_cycles = plc["m_function_ack_cycles"].as<int>();
-    if (s.m_function_ack_cycles < 0) throw ConfigError("scenario: plc.m_function_ack_cycles must be >= 0");
-    s.expectations = parse_list<Expectation>(root["expect"], "expect", parse_expectation);
-    s.expected_events = parse_list<EventExpectation>(root["expect_events"], "expect_events",
-                                                     parse_event_expectation);
-    s.expected_violations = parse_list<ViolationExpectation>(root["expect_violations"], "expect_violations",
-                                                             parse_violation_expectation);
-    for (const auto& v : s.expected_violations)
-      if (s.machine.axis_index(v.axis) < 0)
-        throw ConfigError("expect_violations: axis '" + v.axis + "' is not on the machine");
-    for (const auto& e : s.expectations)
-      for (const auto& axis : e.axis_position_mm)
-        if (s.machine.axis_index(axis.first) < 0)
-          throw ConfigError("expect: axis '" + axis.first + "' is not on the machine");
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(std::string("scenario: ") + e.what());
   }
+  return "";
+}
+
+namespace {
+
+// `machine`: the machine already read from its own file, or nullptr.
+Scenario read_scenario(const YAML::Node& root, const MachineConfig* machine) {
+  const ConfigMap m(root, "", scenario_keys);
+  Scenario s;
+  s.name = "scenario";
+  m.get("name", s.name);
+  m.get("description", s.description);
+  if (m.has("requirements")) {
+    const YAML::Node requirements = m["requirements"];
+    if (!requirements.IsSequence()) throw ConfigError("requirements: must be a list of SPEC IDs");
+    for (size_t i = 0; i < requirements.size(); ++i)
+      s.requirements.push_back(config_text(requirements[i], index_path("requirements", i)));
+  }
+  if (!m.has("machine") || !m["machine"].IsMap())
+    throw ConfigError("machine: must be a mapping (in a scenario file also a file name)");
+  s.machine = machine ? *machine : parse_machine_config(m["machine"]);
+  if (!m.has("nc_program")) throw ConfigError("'nc_program' or 'nc_file' is missing");
+  s.nc_program = m.text("nc_program");
+  if (const std::string problem = nc_text_problem(s.nc_program); !problem.empty())
+    throw ConfigError("nc_program: " + problem);
+  if (m.has("run")) {
+    const ConfigMap run(m["run"], "run", run_keys);
+    run.get("max_time_s", s.max_time_s, Bounds{0, max_run_time_s, true});
+    run.get("settle_time_s", s.settle_time_s, Bounds{0, max_run_time_s});
+    run.get("allow_errors", s.allow_errors);
+  }
+  if (m.has("plc")) {
+    const ConfigMap plc(m["plc"], "plc", plc_keys);
+    s.timeline = parse_list<TimelineStep>(plc["timeline"], "plc.timeline", parse_step);
+    plc.get("m_function_ack_cycles", s.m_function_ack_cycles, 0);
+  }
+  s.expectations = parse_list<Expectation>(m["expect"], "expect", parse_expectation);
+  s.expected_events = parse_list<EventExpectation>(m["expect_events"], "expect_events", parse_event_expectation);
+  s.expected_violations = parse_list<ViolationExpectation>(m["expect_violations"], "expect_violations",
+                                                           parse_violation_expectation);
+  for (const auto& v : s.expected_violations)
+    if (s.machine.axis_index(v.axis) < 0)
+      throw ConfigError("expect_violations: axis '" + v.axis + "' is not on the machine");
+  for (const auto& e : s.expectations)
+    for (const auto& axis : e.axis_position_mm)
+      if (s.machine.axis_index(axis.first) < 0)
+        throw ConfigError("expect: axis '" + axis.first + "' is not on the machine");
   s.resolved = root;
   return s;
 }
 
-Scenario load_scenario_file(const std::string& path) {
-  YAML::Node root;
+}  // namespace
+
+Scenario parse_scenario(const YAML::Node& root) {
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError(path + ": " + e.what());
+    return read_scenario(root, nullptr);
+  } catch (const YAML::Exception& e) {  // what the checks above do not foresee
+    throw ConfigError(std::string("scenario: ") + e.what());
   }
-  if (!root.IsMap()) throw ConfigError(path + ": expected a mapping at the top");
+}
+
+Scenario load_scenario_file(const std::string& path) {
   const fs::path dir = fs::path(path).parent_path();
+  // A file the scenario names: its errors name that file, then the scenario.
+  auto named_by_scenario = [&](const std::string& key, auto read) {
+    try {
+      return read();
+    } catch (const ConfigError& e) {
+      throw ConfigError(std::string(e.what()) + " (the " + key + " of " + path + ")");
+    }
+  };
   try {
+    YAML::Node root = load_yaml_file(path, "scenario");
+    if (!root.IsMap()) throw ConfigError(path + ": expected a mapping at the top");
+    std::optional<MachineConfig> machine;
     if (root["machine"] && root["machine"].IsScalar()) {
-      const fs::path machine_file = dir / root["machine"].as<std::string>();
-      try {
-        root["machine"] = YAML::LoadFile(machine_file.string());
-      } catch (const YAML::Exception& e) {
-        throw ConfigError(machine_file.string() + ": " + e.what());
-      }
+      const fs::path machine_file = dir / root["machine"].Scalar();
+      machine = named_by_scenario("machine", [&] {
+        root["machine"] = load_yaml_file(machine_file, "machine file");
+        try {
+          return parse_machine_config(root["machine"]);  // its keys' paths begin with "machine"
+        } catch (const ConfigError& e) {
+          throw ConfigError(machine_file.string() + ": " + e.what());
+        }
+      });
     }
     if (root["nc_file"]) {
-      if (root["nc_program"]) throw ConfigError("give either 'nc_program' or 'nc_file', not both");
-      root["nc_program"] = read_text_file(dir / root["nc_file"].as<std::string>());
+      if (root["nc_program"]) throw ConfigError(path + ": give either 'nc_program' or 'nc_file', not both");
+      const fs::path nc_file = dir / config_text(root["nc_file"], path + ": nc_file");
+      root["nc_program"] = named_by_scenario("nc_file", [&] {
+        std::string program = read_text_file(nc_file, "NC program");
+        if (const std::string problem = nc_text_problem(program); !problem.empty())
+          throw ConfigError(nc_file.string() + ": " + problem);
+        return program;
+      });
       root.remove("nc_file");
     }
-    return parse_scenario(root);
-  } catch (const ConfigError& e) {
+    try {
+      return read_scenario(root, machine ? &*machine : nullptr);
+    } catch (const ConfigError& e) {
+      throw ConfigError(path + ": " + e.what());
+    }
+  } catch (const YAML::Exception& e) {
     throw ConfigError(path + ": " + e.what());
   }
 }

@@ -100,10 +100,16 @@ struct Scenario {
 };
 
 // Loads a scenario file; `machine:` and `nc_file:` may name files relative
-// to it. Throws ConfigError with the file and field.
+// to it. Throws ConfigError naming the file and the key's path
+// ("machine.axes[1].slep_max"); an unknown key is an error, with the
+// closest known key (config_error.hpp).
 Scenario load_scenario_file(const std::string& path);
 // Parses a scenario whose machine and NC program are inline (as in a manifest).
 Scenario parse_scenario(const YAML::Node& root);
 std::string to_yaml(const Scenario& scenario);
+// What makes `text` no NC program, "" if nothing: "line 3: byte 0x00 (NUL)
+// is not text: ...". A control character other than tab, CR and LF is
+// binary, not text; bytes >= 0x80 pass (UTF-8 or Latin-1 comments).
+std::string nc_text_problem(const std::string& text);
 
 }  // namespace hil

@@ -45,7 +45,9 @@ int main(int argc, char** argv) {
   hil::rig::RunOptions run;
   run.bin_dir = own_directory();
   auto* run_cmd = app.add_subcommand("run", "run a scenario through the whole rig and report");
-  run_cmd->add_option("scenario", run.scenario_file, "scenario YAML file")->required()->check(CLI::ExistingFile);
+  // No CLI::ExistingFile: the loader refuses a missing file or a directory
+  // as it refuses any bad input, naming it, with exit status 2.
+  run_cmd->add_option("scenario", run.scenario_file, "scenario YAML file")->required();
   run_cmd->add_option("--out", run.run_dir, "run folder (default runs/<name>-<time>)");
   run_cmd->add_option("--port", run.port, "udpm port of this rig (default derived from the pid)")
       ->check(CLI::Range(1024, 65535));

@@ -18,3 +18,27 @@ expect_output "not an LCM"
 printf 'name: x\nmachine:\n  axes:\n    - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 60, velocity_lag_s: 0.02, velocity_loop_order: 2, velocity_damping: 0.5}\nnc_program: "M30"\n' >"$WORK/unstable.yaml"
 expect_status 2 "$hil" run "$WORK/unstable.yaml" --out "$WORK/run3" --port 7742
 expect_output "axis X: drive model: the position loop is unstable"
+
+# RIG-5: a typo'd key is refused, not ignored (here it would switch the
+# following error monitoring of axis Y off), naming file, path and the key meant.
+sed '0,/slep_max/! {0,/slep_max/ s/slep_max/slep_mx/}' "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/typo_machine.yaml"
+printf 'name: x\nmachine: typo_machine.yaml\nnc_program: "M30"\n' >"$WORK/typo.yaml"
+expect_status 2 "$hil" run "$WORK/typo.yaml" --out "$WORK/run4" --port 7743
+expect_output "typo_machine.yaml: machine.axes[1].slep_mx: unknown key, did you mean slep_max?"
+printf 'name: x\nmachine: %s\nnc_program: "M30"\nexpectations:\n  - when: program_end\n' \
+  "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/expectations.yaml"
+expect_status 2 "$hil" run "$WORK/expectations.yaml" --out "$WORK/run5" --port 7744
+expect_output "expectations: unknown key, did you mean expect?"
+
+# Numbers that are not finite, a directory for a file, binary in an NC file.
+printf 'name: x\nmachine: %s\nnc_program: "M30"\nrun: {max_time_s: .nan}\n' \
+  "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/nan.yaml"
+expect_status 2 "$hil" run "$WORK/nan.yaml" --out "$WORK/run6" --port 7745
+expect_output "nan.yaml: run.max_time_s: must be a number > 0 and <= 1e+06, not .nan"
+mkdir -p "$WORK/folder"
+expect_status 2 "$hil" run "$WORK/folder" --out "$WORK/run7" --port 7746
+expect_output "folder: scenario is a directory, not a file"
+printf 'N10 G01 X1 F600\nN20 X\0002\nN30 M30\n' >"$WORK/binary.nc"
+printf 'name: x\nmachine: %s\nnc_file: binary.nc\n' "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/binary.yaml"
+expect_status 2 "$hil" run "$WORK/binary.yaml" --out "$WORK/run8" --port 7747
+expect_output "binary.nc: line 2: byte 0x00 (NUL) is not text"

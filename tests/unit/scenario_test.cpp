@@ -56,9 +56,10 @@ plc:
 
 TEST_CASE("RIG-5 scenario: unknown HLI fields and triggers are refused with their place", "[scenario]") {
   CHECK_THROWS_WITH(scenario("plc:\n  timeline:\n    - when: {cycle: 1}\n      set: {feed_hold.command_w: true}\n"),
-                    Catch::Contains("plc.timeline[0]: unknown HLI field 'feed_hold.command_w'"));
+                    Catch::Contains("plc.timeline[0].set.feed_hold.command_w: unknown HLI field, did you mean "
+                                    "feedhold.command_w?"));
   CHECK_THROWS_WITH(scenario("plc:\n  timeline:\n    - when: {velocity: 1}\n      set: {}\n"),
-                    Catch::Contains("unknown HLI field 'velocity'"));
+                    Catch::Contains("plc.timeline[0].when.velocity: unknown key (known: cycle, time_s"));
   CHECK_THROWS_WITH(scenario("expect:\n  - when: program_end\n    axis_position_mm: {Q: 1}\n"),
                     Catch::Contains("axis 'Q' is not on the machine"));
 }
@@ -149,7 +150,7 @@ TEST_CASE("RIG-3 machine: P-AXIS-00441/00442 below 1000 (limit under a_max) are 
                     Catch::Contains("P-AXIS-00442"));
   CHECK_THROWS_WITH(parse_machine_config(YAML::Load(
                         "axes: [{name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: -1, velocity_lag_s: 0.002}]")),
-                    Catch::Contains("'kv' must be > 0"));
+                    Catch::Contains("machine.axes[0].kv: must be a number > 0, not -1"));
   CHECK_THROWS_WITH(parse_machine_config(YAML::Load("axes: []")), Catch::Contains("non-empty"));
 }
 
@@ -189,7 +190,8 @@ TEST_CASE("RIG-3 machine: drive model keys and monitoring parameters P-AXIS-0043
   CHECK(swe.swe_toleranz == 0.1);
   CHECK_THROWS_WITH(machine(", swe_pos: 500"), Catch::Contains("P-AXIS-00177"));
   CHECK_THROWS_WITH(machine(", swe_neg: 5, swe_pos: 5"), Catch::Contains("P-AXIS-00177 swe_neg must be below"));
-  CHECK_THROWS_WITH(machine(", swe_neg: -5, swe_pos: 5, swe_toleranz: -1"), Catch::Contains("P-AXIS-00179"));
+  CHECK_THROWS_WITH(machine(", swe_neg: -5, swe_pos: 5, swe_toleranz: -1"),
+                    Catch::Contains("machine.axes[0].swe_toleranz: must be a number >= 0, not -1"));
 }
 
 TEST_CASE("RIG-5 scenario: expected events match by parameter, ID and NC line; absent ones must not appear",
@@ -239,5 +241,5 @@ machine:
     - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002}
 nc_program: "M30\n"
 )")),
-                    Catch::Contains("P-CHAN-00070 m_pre_outp[7] must be >= 0"));
+                    Catch::Contains("machine.m_pre_outp[7]: must be a number >= 0, not -1"));
 }
