@@ -82,10 +82,17 @@ MotionProfile::MotionProfile(MotionState start, std::vector<Phase> phases)
   state.j = 0;
   end_ = state;
   duration_ = time;
+  double v_scale = std::abs(start_.v);
+  for (const MotionState& s : starts_) v_scale = std::max(v_scale, std::abs(s.v));
+  moving_at_end_ = std::abs(end_.v) > 1e-9 * v_scale;
 }
 
 MotionState MotionProfile::at(double t) const {
-  if (!(t < duration_)) return end_;
+  if (!(t < duration_)) {
+    MotionState s = end_;
+    if (t > duration_ && std::isfinite(t) && moving_at_end_) s.p += end_.v * (t - duration_);
+    return s;
+  }
   t = std::max(t, 0.0);
   // The last phase starting at or before t: it lasts past t, and jumps of
   // zero duration at t are already in its start state.

@@ -45,7 +45,13 @@ class MotionProfile {
   double duration() const { return duration_; }
   MotionState start() const { return start_; }
   MotionState end() const { return end_; }
-  // State at time t, clamped to [0, duration()].
+  // State at time t: before 0 the start; after duration() the motion goes
+  // on at the end velocity (every planner's profile ends with a = 0), and a
+  // stop (its end velocity 0 to round-off) stays where it ended. A path
+  // whose plan ended on a block transition it crosses moving, replanned in
+  // the next cycle, goes on from where it then is; taken from where the
+  // plan ended it stood still for the rest of the cycle (KRN-3: 1.66e6
+  // mm/s^3 when an override change came in that cycle).
   MotionState at(double t) const;
   const std::vector<Phase>& phases() const { return phases_; }
   // State at the start of phase i (i == phases().size(): the end).
@@ -58,6 +64,7 @@ class MotionProfile {
   std::vector<double> times_;
   MotionState start_, end_;
   double duration_ = 0;
+  bool moving_at_end_ = false;  // not a stop (whose end velocity is 0 to round-off)
 };
 
 }  // namespace hil::cnc

@@ -29,8 +29,33 @@ class Planner {
   MotionProfile forward() {
     const VelocityChange arrive = velocity_change(start_.v, start_.a, v_end_, lim_, slope_);
     const double miss = arrive.end(start_).p - target_;
-    if (is_round_off(miss, arrive.duration())) return MotionProfile(start_, phases_of(arrive));
+    if (is_round_off(miss, arrive.duration()) || (miss > 0 && miss <= overshoot_tolerance()))
+      return MotionProfile(start_, phases_of(arrive));
     if (miss < 0) return drive_and_arrive(1.0, miss);
+    // v_end is the most the path may arrive with (a block transition's
+    // limit). Arriving with a = 0, a lower velocity can need less way than
+    // v_end (braking, the way to the end velocity is not monotone in it): if
+    // one fits, arrive with the highest such one rather than faster than
+    // v_end (KRN-3: override raised while the path accelerated towards a
+    // line's end, v_end rose from 0.47 to 0.62 mm/s and became unreachable,
+    // and it entered an arc of radius 0.058 mm at 7.3 mm/s).
+    if (v_end_ > 0 && !lowered_) {
+      auto fits = [&](double v) {
+        return velocity_change(start_.v, start_.a, v, lim_, slope_).end(start_).p <= target_;
+      };
+      if (fits(0)) {
+        Planner lower(start_, target_, last_fitting(0.0, v_end_, fits), lim_, slope_);
+        lower.lowered_ = true;
+        return lower.forward();
+      }
+    }
+    // SIN2 from a state inside a sin² pulse (a replan at a block transition,
+    // while braking): a fresh pulse starts again at jerk 0 and can need more
+    // way than the interrupted one had left, so that the path would arrive
+    // too fast (KRN-3: 162,455 mm/s^2 when the setpoint then jumps onto the
+    // end point). Linear ramps at the full jerk, the same limit, need the
+    // least way: arrive with them.
+    if (slope_ == SlopeType::sin2) return Planner(start_, target_, v_end_, lim_, SlopeType::trapez).forward();
     return MotionProfile(start_, phases_of(closest_reachable_arrival()));
   }
 
@@ -45,6 +70,16 @@ class Planner {
                               std::abs(start_.a) * t * t);
     return std::abs(miss) <= round_off;
   }
+
+  // Along a path, arriving with v_end a little beyond the end beats
+  // arriving too fast: a stretch's v_end is the highest velocity from which
+  // the next one can still be kept, to the last double (highest_entry_velocity),
+  // and a state sampled from a plan over a long stretch carries that plan's
+  // rounding (1e-13 mm over 500 mm). Treating such a miss as "v_end cannot
+  // be reached" arrived a rounding faster, which the next short block could
+  // no longer absorb: it arrived 1.9 mm/s fast at the program end (KRN-3).
+  // 1 pm beyond the end is a setpoint jump of at most that much.
+  double overshoot_tolerance() const { return 1e-12 * (1 + std::abs(start_.p) + std::abs(target_)); }
 
   static std::vector<Phase> phases_of(const VelocityChange& change) {
     std::vector<Phase> phases;
@@ -87,11 +122,23 @@ class Planner {
 
   // The end point of a change to v moves monotonically away from v_natural
   // (the velocity of ramping a straight to 0): bisect for the v whose change
-  // ends on the target. If even ramping to a = 0 passes it, do that.
+  // ends on the target. If even ramping to a = 0 passes it, arrive with the
+  // change that passes it least: braking (a < 0), ramping a to 0 covers more
+  // way than braking on to v_end, so a miss by round-off (a state sampled
+  // from a plan over a long stretch carries the stretch's rounding into the
+  // short one after a block transition) must not turn into arriving at
+  // v_natural far beyond the end (KRN-3: a last block of 0.05 mm entered
+  // at 7 mm/s braking, left at 4.8 mm/s, and the setpoint jumped onto the
+  // program's end point).
   VelocityChange closest_reachable_arrival() const {
     const double v_natural = std::max(0.0, velocity_after_ramp_to_zero(start_.v, start_.a, lim_, slope_));
     auto change_to = [&](double v) { return velocity_change(start_.v, start_.a, v, lim_, slope_); };
-    if (change_to(v_natural).end(start_).p >= target_) return change_to(v_natural);
+    const VelocityChange natural = change_to(v_natural);
+    const double natural_end = natural.end(start_).p;
+    if (natural_end >= target_) {
+      const VelocityChange to_v_end = change_to(v_end_);
+      return to_v_end.end(start_).p < natural_end ? to_v_end : natural;
+    }
     // v_natural ends before the target, v_end beyond it.
     return change_to(last_fitting(v_natural, v_end_, [&](double v) { return change_to(v).end(start_).p <= target_; }));
   }
@@ -143,6 +190,7 @@ class Planner {
   MotionState start_;
   double target_;
   double v_end_;
+  bool lowered_ = false;  // v_end_ already lowered to one that fits
   Limits lim_;
   SlopeType slope_;
   VelocityChange drive_;

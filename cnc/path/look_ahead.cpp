@@ -9,9 +9,12 @@
 
 namespace hil::cnc {
 
-double highest_entry_velocity(double v_exit, double distance, double v_cap, const Limits& lim, SlopeType slope) {
+double highest_entry_velocity(double v_exit, double distance, double v_cap, const Limits& lim, SlopeType slope,
+                              double reaction_s) {
   if (v_cap <= v_exit) return v_cap;
-  auto covers = [&](double v0) { return velocity_change(v0, 0, v_exit, lim, slope).end({0, v0, 0, 0}).p; };
+  auto covers = [&](double v0) {
+    return v0 * reaction_s + velocity_change(v0, 0, v_exit, lim, slope).end({0, v0, 0, 0}).p;
+  };
   if (covers(v_cap) <= distance) return v_cap;
   // v_exit fits, v_cap does not; the distance grows with v0.
   return last_fitting(v_exit, v_cap, [&](double v0) { return covers(v0) <= distance; });
@@ -44,6 +47,22 @@ Limits LookAhead::cruise_limits(size_t i) const {
   return lim;
 }
 
+// The stretch runs on to the first limiting transition. A non-limiting
+// block's v_end is only its cruise velocity, not what the transitions after
+// it need, so a stretch must not end there with that v_end: it made the
+// path leave the block at cruise velocity, and a short block before a
+// reversal then left too little way to stop (KRN-3: 66,609 mm/s^2 on X for
+// N10 G01 X1 F3000 / X2 / X3 / X4 / X0, where the velocity reached lay a
+// rounding above the cruise velocity and ended the stretch at N30; and after
+// a lower override the path ended every short block at its new cruise
+// velocity, with a = 0, instead of braking through them).
+//
+// One reason to end it early remains: the path moves faster than a
+// non-limiting transition allows (after a lower override, feed hold or a
+// stop request the cruise velocity drops below v_now, and transitions
+// stop limiting because nothing is above the new cruise). There the stretch
+// ends with the highest velocity from which the next limiting transition
+// can still be kept (what the backward pass gives a limiting transition).
 Stretch LookAhead::stretch(double v_now) const {
   Stretch st{0, 0, cruise_limits(0), blocks_.front().slope};
   for (size_t i = 0; i < blocks_.size(); ++i) {
@@ -52,9 +71,28 @@ Stretch LookAhead::stretch(double v_now) const {
     st.lim.j = std::min(st.lim.j, lim.j);
     st.length += blocks_[i].segment.length();
     st.v_end = blocks_[i].v_end;
-    if (blocks_[i].limiting || blocks_[i].v_end < v_now) break;
+    if (blocks_[i].limiting) break;
+    if (blocks_[i].junction_limit < v_now * (1 - 1e-9)) {  // not a rounding above it (cruising at v_max)
+      st.v_end = std::min(st.v_end, entry_velocity_after(i));
+      break;
+    }
   }
   return st;
+}
+
+double LookAhead::entry_velocity_after(size_t i) const {
+  double distance = 0;
+  Limits lim{cruise_limits(i + 1).v, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  size_t k = i + 1;
+  for (; k < blocks_.size(); ++k) {  // the last block is limiting
+    const Limits next = cruise_limits(k);
+    distance += blocks_[k].segment.length();
+    lim.a = std::min(lim.a, next.a);
+    lim.j = std::min(lim.j, next.j);
+    if (blocks_[k].limiting) break;
+  }
+  return highest_entry_velocity(blocks_[k].v_end, distance, blocks_[i].v_end, lim, blocks_[i + 1].slope,
+                                machine_.cycle_time_s());
 }
 
 void LookAhead::backward_pass(size_t last, bool until_unchanged) {
@@ -68,14 +106,28 @@ void LookAhead::backward_pass(size_t last, bool until_unchanged) {
     distance += next.segment.length();
     lim = {next_lim.v, std::min(lim.a, next_lim.a), std::min(lim.j, next_lim.j)};
     LookAheadBlock& b = blocks_[i];
-    const double cruise = cruise_limits(i).v;
+    const Limits own = cruise_limits(i);
+    const double cruise = own.v;
     const double cap = std::min({b.junction_limit, cruise, next_lim.v});
-    b.limiting = cap < std::max(cruise, next_lim.v) || b.slope != next.slope;
+    // Into lower acceleration or jerk limits (a line into a tangent arc)
+    // the path passes with a = 0, so that a stretch's limits are its front
+    // block's: replanned from a later block of it, the limits never drop
+    // under an acceleration the path already carries (it would be unwound
+    // at the lower jerk and carry the velocity below 0: the path ran
+    // backward for a moment after a lower override or feed hold).
+    // Collinear lines from rounded end points differ in their limits by
+    // round-off: not lower. (A cap a rounding below the cruise velocity made
+    // such a transition limiting once an override above 100 % lifted the
+    // cruise velocity to the axes' limit: the path, braking through it for
+    // the program end, had to reach it with a = 0 and could not, KRN-3.)
+    constexpr double same = 1 - 1e-9;
+    b.limiting = cap < same * std::max(cruise, next_lim.v) || b.slope != next.slope || next_lim.a < same * own.a ||
+                 next_lim.j < same * own.j;
     if (!b.limiting) {
       b.v_end = cap;  // the path passes at cruise velocity or below
       continue;
     }
-    const double v = highest_entry_velocity(v_next, distance, cap, lim, next.slope);
+    const double v = highest_entry_velocity(v_next, distance, cap, lim, next.slope, machine_.cycle_time_s());
     if (until_unchanged && v == b.v_end) break;
     b.v_end = v_next = v;
     distance = 0;

@@ -23,8 +23,9 @@ struct LookAheadBlock {
   // velocities on both sides, and what the stretches after it allow.
   double v_end = 0;
   // The velocity must drop below a cruise velocity here (a corner, a feed
-  // change, a curvature step), or the slope type changes, or nothing
-  // follows yet: where stretches end.
+  // change, a curvature step), or the slope type changes, or the next
+  // block's acceleration or jerk limit is lower (passed with a = 0), or
+  // nothing follows yet: where stretches end.
   bool limiting = true;
 };
 
@@ -63,7 +64,10 @@ class LookAhead {
   // scaled programmed velocity.
   Limits cruise_limits(size_t i) const;
 
-  // The stretch that starts with the front block, for a path now moving at v_now.
+  // The stretch that starts with the front block, for a path now moving at
+  // v_now: up to the first limiting transition, or to a transition slower
+  // than v_now (with an end velocity from which the next limiting one can
+  // still be kept).
   Stretch stretch(double v_now) const;
 
  private:
@@ -72,6 +76,9 @@ class LookAhead {
   // v_end within the stretch between. With `until_unchanged` it stops at
   // the first limiting transition that keeps its v_end.
   void backward_pass(size_t last, bool until_unchanged);
+  // The highest velocity at the end of the non-limiting block i from which
+  // the path still reaches the next limiting transition's v_end.
+  double entry_velocity_after(size_t i) const;
 
   const MachineConfig& machine_;
   size_t capacity_;
@@ -80,7 +87,13 @@ class LookAhead {
 };
 
 // The highest velocity v0 <= v_cap from which a velocity change (a = 0 at
-// both ends) reaches v_exit within `distance`.
-double highest_entry_velocity(double v_exit, double distance, double v_cap, const Limits& lim, SlopeType slope);
+// both ends) reaches v_exit within `distance`, after going on at v0 for up
+// to `reaction_s` first: the channel samples the path at its cycle time, and
+// a plan that ends on a transition between two cycles is followed by the
+// next one only from the next cycle (replanned there, the path has moved on
+// at v0 for up to one cycle; without that margin v0 was the exact limit, and
+// any such delay, or rounding, left the next block too short to keep v_exit).
+double highest_entry_velocity(double v_exit, double distance, double v_cap, const Limits& lim, SlopeType slope,
+                              double reaction_s = 0);
 
 }  // namespace hil::cnc

@@ -175,3 +175,35 @@ TEST_CASE("RIG-3 a drive error stops the channel on the path, jerk-limited, with
     require_within_limits(checker);
   }
 }
+
+TEST_CASE("KRN-3 an override change in the cycle the path reaches a transition it crosses moving keeps the limits",
+          "[feed_control]") {
+  // The plan of a stretch ends at a limiting transition with v > 0 (a line
+  // into a tangent arc, a feed change) between two cycles; replanned in the
+  // next cycle (override changed), the path was taken from where the plan
+  // ended, not from where it would be at that cycle: it stood still for the
+  // rest of the cycle (1.66e6 mm/s^3 on X).
+  const MachineConfig m = test::xyz_machine();
+  for (const char* program : {"N50 G01 X-0.152 F808\nN60 G03 Y-13.41 I0 J-6.705\nM30\n",
+                              "N10 G01 X5 F3000\nN20 X20 F6000\nM30\n"}) {
+    INFO(program);
+    int64_t reached = -1;  // the cycle in which the path is in the second block
+    {
+      Channel channel(m, program);
+      run_program(channel, nullptr, [&](int64_t k, const HliState& s, HliControl&) {
+        if (reached < 0 && s.block_count_r == 2) reached = k;
+      });
+    }
+    REQUIRE(reached > 0);
+    for (int64_t at = reached - 2; at <= reached + 1; ++at) {
+      INFO("override 90 % applied in cycle " << at);
+      Channel channel(m, program);
+      logger::LimitChecker checker(m);
+      run_program(channel, &checker, [&](int64_t k, const HliState&, HliControl& c) {
+        if (k + 1 == at) c.override = {900, true};
+      });
+      CHECK(channel.hli().channel_state == ChannelState::program_end);
+      require_within_limits(checker);
+    }
+  }
+}

@@ -179,3 +179,117 @@ TEST_CASE("KRN-3 look-ahead: STEP keeps velocity and acceleration limits", "[loo
         FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
   }
 }
+
+TEST_CASE("KRN-3 look-ahead: the path brakes within short collinear steps for the reversal after them",
+          "[look_ahead]") {
+  const MachineConfig m = test::xyz_machine();
+  SECTION("at full feed: cruising at exactly F, the stretch must still run on to the reversal") {
+    // Was 66,609 mm/s^2 on X: the stretch stopped at N30, whose end
+    // velocity (its cruise, 50 mm/s) lay a rounding below the velocity
+    // reached, and N40 alone (1 mm) is too short to stop from 50 mm/s.
+    cycles_for("N10 G01 X1 F3000\nN20 X2\nN30 X3\nN40 X4\nN50 X0\nN60 M30\n", m);
+  }
+  SECTION("override lowered while cruising over 0.2 mm steps, shortly before the reversal") {
+    // Faster than the new cruise velocity, the path must still plan to the
+    // reversal, not to the end of the block it is in (which it must leave
+    // with a = 0: 0.2 mm at 50 mm/s allow it to lose 0.16 mm/s).
+    std::ostringstream nc;
+    for (int i = 1; i <= 60; ++i) nc << "G01 X" << i * 0.2 << " F3000\n";
+    nc << "X0\nM30\n";
+    for (const int64_t at : {180, 200, 220}) {  // braking for the reversal at X12 starts at ~240
+      INFO("override 30 % from cycle " << at);
+      Channel channel(m, nc.str());
+      logger::LimitChecker checker(m);
+      run_program(channel, &checker, [&](int64_t k, const HliState&, HliControl& c) {
+        if (k >= at) c.override = {300, true};
+      });
+      REQUIRE(channel.hli().channel_state == ChannelState::program_end);
+      for (const auto& v : checker.finish().violations)
+        FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+    }
+  }
+}
+
+TEST_CASE("KRN-3 look-ahead: SIN2 replanned at a block transition while braking still arrives at rest",
+          "[look_ahead]") {
+  // A fresh sin² pulse from a state inside the braking pulse starts at
+  // jerk 0 again and needs more way than the interrupted one had left: the
+  // path arrived fast and the setpoint jumped onto the end point (162,455
+  // mm/s^2; with two 1 um steps, 105,058 mm/s^3).
+  const MachineConfig m = test::xyz_machine();
+  for (const char* nc : {"#SLOPE[TYPE=SIN2]\nG01 X8.36740135 Y2.814332817 F12050\nX12.722497342 Y-0.378336738\n"
+                         "X14.174196006 Y-1.442559923\nM30\n",
+                         "#SLOPE[TYPE=SIN2]\nG01 X0.000268301 Y0.000963335 F7880\nX0.000536602 Y0.00192667\nM30\n"}) {
+    INFO(nc);
+    cycles_for(nc, m);
+  }
+}
+
+TEST_CASE("KRN-3 look-ahead: a short last block after a long collinear one ends at rest at a low override",
+          "[look_ahead]") {
+  // The stretch's end velocity before the last block was the exact limit
+  // from which 0.05 mm suffice to stop; the state sampled on the long plan
+  // missed it by 7.6e-15 mm, the planner took that as unreachable and
+  // arrived at the end at 4.8 mm/s (2.75e6 mm/s^3 when it jumped there).
+  const MachineConfig m = test::xyz_machine();
+  const char* nc = "G01 X-20.397756389 Y-26.451839138 F1488\nX9.302243611 Y13.148160862\n"
+                   "X9.332243611 Y13.188160862\nX9.347243611 Y13.208160862\nM30\n";
+  Channel channel(m, nc);
+  logger::LimitChecker checker(m);
+  run_program(channel, &checker, [](int64_t, const HliState&, HliControl& c) { c.override = {373, true}; });
+  REQUIRE(channel.hli().channel_state == ChannelState::program_end);
+  for (const auto& v : checker.finish().violations)
+    FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+}
+
+TEST_CASE("KRN-3 look-ahead: after a lower override the path never runs backward before a tangent arc",
+          "[look_ahead]") {
+  // Override dropped while the path accelerated along a line into a
+  // tangent arc, raised again while it braked: replanned, the stretch took
+  // in the arc and its lower jerk, too low to unwind the braking the path
+  // carried, and the velocity went below 0 (dist_prog_start decreased).
+  const MachineConfig m = test::xyz_machine();
+  const char* nc = "N30 G01 X-4.16 F187\nN40 G02 Y4.844 I0 J2.422\nM30\n";
+  for (int64_t drop = 20; drop <= 60; drop += 5)
+    for (int64_t rise = drop + 5; rise <= drop + 40; rise += 5) {
+      INFO("override 2.8 % from cycle " << drop << ", 95.3 % from cycle " << rise);
+      Channel channel(m, nc);
+      logger::LimitChecker checker(m);
+      double lowest_v = 0, previous_dps = 0;
+      bool dps_monotone = true;
+      run_program(channel, &checker, [&](int64_t k, const HliState& s, HliControl& c) {
+        lowest_v = std::min(lowest_v, s.path_velocity);
+        dps_monotone = dps_monotone && s.dist_prog_start >= previous_dps - 1e-6;
+        previous_dps = s.dist_prog_start;
+        if (k == drop) c.override = {28, true};
+        if (k == rise) c.override = {953, true};
+      });
+      REQUIRE(channel.hli().channel_state == ChannelState::program_end);
+      CHECK(lowest_v >= 0);
+      CHECK(dps_monotone);
+      for (const auto& v : checker.finish().violations)
+        FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+    }
+}
+
+TEST_CASE("KRN-3 look-ahead: override raised while the path accelerates towards a tight tangent arc",
+          "[look_ahead]") {
+  // The end velocity before the arc (radius 0.058 mm) rose with the
+  // override, from 0.47 to 0.62 mm/s; from the state the path was in,
+  // arriving at 0.62 with a = 0 needed more way than arriving at 0.47, the
+  // planner took the "closest reachable" 7.3 mm/s instead, and the arc was
+  // entered far above its limits (680,538 mm/s^3).
+  const MachineConfig m = test::xyz_machine();
+  const char* nc = "N90 G01 X-0.62 F9753\nN100 G03 X-0.678 Y-0.058 I0 J-0.058\nM30\n";
+  for (int64_t rise = 5; rise <= 80; rise += 3) {
+    INFO("override 13.2 %, 80.8 % from cycle " << rise);
+    Channel channel(m, nc);
+    logger::LimitChecker checker(m);
+    run_program(channel, &checker, [&](int64_t k, const HliState&, HliControl& c) {
+      c.override = {k < rise ? 132 : 808, true};
+    });
+    REQUIRE(channel.hli().channel_state == ChannelState::program_end);
+    for (const auto& v : checker.finish().violations)
+      FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+  }
+}

@@ -1,0 +1,641 @@
+#include "channel_fuzz.hpp"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <cmath>
+#include <exception>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "decoder.hpp"
+#include "fuzz_rng.hpp"
+#include "limit_check.hpp"
+#include "path_segment.hpp"
+#include "position_profile.hpp"
+
+namespace hil::fuzz {
+namespace {
+
+constexpr int32_t calm_override_min = 300;  // 30 %, in 0.1 %
+
+// The PLC of a run: a random personality (which units it plays with, how
+// often, how late it acknowledges), random until `chaos_end`, calm after.
+class FuzzPlc {
+ public:
+  // Override values up to 120 %: above the machine's override_max_percent
+  // the channel clamps them (with a warning).
+  FuzzPlc(uint64_t seed, int64_t chaos_end) : rng_(seed), chaos_end_(chaos_end) {
+    use_feedhold_ = rng_.chance(0.5);
+    use_override_ = rng_.chance(0.6);
+    ramp_override_ = rng_.chance(0.2);
+    use_ddtg_ = rng_.chance(0.5);
+    use_backward_ = rng_.chance(0.4);
+    spurious_acks_ = rng_.chance(0.2);
+    feedhold_mean_ = rng_.log_uniform(20, 1500);
+    override_mean_ = ramp_override_ ? rng_.uniform(1, 5) : rng_.log_uniform(5, 1500);
+    ddtg_mean_ = rng_.log_uniform(50, 3000);
+    backward_mean_ = rng_.log_uniform(30, 2000);
+    const size_t delay = rng_.pick({0.3, 0.4, 0.2, 0.1});
+    ack_delay_max_ = delay == 0 ? 1 : delay == 1 ? 20 : delay == 2 ? 300 : 2000;
+    calm_override_enable_ = rng_.chance(0.7);
+    calm_override_ = static_cast<int32_t>(rng_.integer(calm_override_min, 1200));
+    next_feedhold_ = gap(feedhold_mean_);
+    next_override_ = gap(override_mean_);
+    next_ddtg_ = gap(ddtg_mean_);
+    next_backward_ = gap(backward_mean_);
+  }
+
+  const PlcCounts& counts() const { return counts_; }
+  // No more delete distance to go edges from now on.
+  void stop_ddtg() { ddtg_stopped_ = true; }
+  // No edges while backward motion is requested or active, nor from the
+  // line `last_motion_line` on.
+  void avoid_known_bug(int64_t last_motion_line) {
+    avoid_backward_ddtg_ = true;
+    last_motion_line_ = last_motion_line;
+  }
+  // No backward motion toggle within 1 um of where the path entered its
+  // block (start, or end going backward): a turn there drops a rest under
+  // 10 nm (backward_motion.cpp, shortest_rest_mm) and the setpoint jumps.
+  void avoid_turns_at(std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> block_ends) {
+    block_ends_ = std::move(block_ends);
+  }
+
+  // The answer to the state of cycle k, applied by step k + 1.
+  void answer(int64_t k, const HliState& s, HliControl& c) {
+    c.cycle = k;
+    c.program_start.command_w = false;
+    const bool chaos = k < chaos_end_;
+    if (!chaos) {
+      c.feedhold = {false, true};
+      c.override = {calm_override_, calm_override_enable_};
+      c.delete_distance_to_go.command_w = false;
+      // Forward, but a short cut running backward cannot turn (DDTG-10: it
+      // stands until backward motion is requested again): let it finish.
+      c.backward_motion = {s.backward_motion.state_r && s.delete_distance_to_go_active_r, true};
+    }
+    if (chaos && use_feedhold_ && k >= next_feedhold_) {
+      c.feedhold = {!c.feedhold.command_w, rng_.chance(0.95)};
+      next_feedhold_ = k + gap(feedhold_mean_);
+      ++counts_.feedhold_edges;
+    }
+    if (chaos && use_override_ && k >= next_override_) {
+      int32_t value;
+      if (ramp_override_) {
+        value = std::clamp(c.override.command_w + static_cast<int32_t>(rng_.integer(-40, 40)), 0, override_top_);
+      } else {
+        const size_t which = rng_.pick({0.15, 0.55, 0.15, 0.15});
+        value = static_cast<int32_t>(which == 0   ? 0
+                                     : which == 1 ? rng_.integer(0, override_top_)
+                                     : which == 2 ? rng_.integer(950, 1050)
+                                                  : rng_.integer(1, 50));
+      }
+      c.override = {value, rng_.chance(0.9)};
+      next_override_ = k + gap(override_mean_);
+      ++counts_.override_changes;
+    }
+    if (chaos && use_ddtg_) {
+      ControlUnitBool& ddtg = c.delete_distance_to_go;
+      const bool avoided = ddtg_stopped_ || (avoid_backward_ddtg_ && (c.backward_motion.command_w ||
+                                                                       s.backward_motion.request_r ||
+                                                                       s.backward_motion.state_r ||
+                                                                       s.block_count_r >= last_motion_line_));
+      if (!ddtg.command_w && k >= next_ddtg_ && !avoided) {
+        ddtg = {true, rng_.chance(0.9)};
+        const uint32_t mask = rng_.chance(0.4) ? 0u : static_cast<uint32_t>(rng_.integer(1, 15));
+        c.delete_distance_to_go_activation = {static_cast<int32_t>(mask), rng_.chance(0.85)};
+        // Held: a few cycles (withdrawn before the short cut, DDTG-3), until
+        // the short cut runs, or long.
+        const size_t hold = rng_.pick({0.25, 0.4, 0.35});
+        release_on_active_ = hold == 1;
+        ddtg_release_ = k + (hold == 0 ? rng_.integer(1, 20) : hold == 1 ? 5000 : rng_.integer(50, 600));
+        ++counts_.ddtg_edges;
+      } else if (ddtg.command_w && (k >= ddtg_release_ || (release_on_active_ && s.delete_distance_to_go_active_r))) {
+        ddtg.command_w = false;
+        next_ddtg_ = k + gap(ddtg_mean_);
+      }
+    }
+    if (chaos && use_backward_ && k >= next_backward_ && !near_entry(s)) {
+      c.backward_motion = {!c.backward_motion.command_w, rng_.chance(0.95)};
+      next_backward_ = k + gap(backward_mean_);
+      ++counts_.backward_toggles;
+    }
+    acknowledge(k, s, c, chaos);
+  }
+
+ private:
+  // A rising edge of m_function_ack.command_w (one cycle long) a random
+  // delay after m_function_request_r shows; a request still shown after an
+  // edge is a new one (or the old one, if the edge came without enable_w).
+  void acknowledge(int64_t k, const HliState& s, HliControl& c, bool chaos) {
+    ControlUnitBool& ack = c.m_function_ack;
+    if (ack.command_w) {
+      ack.command_w = false;
+    } else if (ack_at_ >= 0 && k >= ack_at_) {
+      ack = {true, !(chaos && rng_.chance(0.05))};
+      ack_at_ = -1;
+      ++counts_.m_acks;
+    } else if (chaos && spurious_acks_ && ack_at_ < 0 && rng_.chance(0.002)) {
+      ack = {true, true};  // unasked: ignored, or an early acknowledgement
+    } else {
+      ack.enable_w = true;
+    }
+    if (!ack.command_w && ack_at_ < 0 && s.m_function_request_r)
+      ack_at_ = k + 1 + (chaos ? rng_.integer(0, ack_delay_max_) : rng_.integer(0, 5));
+  }
+
+  int64_t gap(double mean) { return 1 + static_cast<int64_t>(rng_.uniform(0, 2 * mean)); }
+
+  bool near_entry(const HliState& s) const {
+    const auto it = block_ends_.find(s.block_count_r);
+    if (it == block_ends_.end()) return false;
+    const std::vector<double>& entry = s.backward_motion.state_r ? it->second.second : it->second.first;
+    double d2 = 0;
+    for (size_t i = 0; i < entry.size() && i < s.axis_position_r.size(); ++i) {
+      const double d = static_cast<double>(s.axis_position_r[i]) / hli_units_per_mm - entry[i];
+      d2 += d * d;
+    }
+    return d2 < 1e-6;  // 1 um
+  }
+
+  Rng rng_;
+  int64_t chaos_end_;
+  int32_t override_top_ = 1200;
+  bool use_feedhold_, use_override_, ramp_override_, use_ddtg_, use_backward_, spurious_acks_;
+  double feedhold_mean_, override_mean_, ddtg_mean_, backward_mean_;
+  int64_t ack_delay_max_;
+  bool calm_override_enable_;
+  int32_t calm_override_;
+  int64_t next_feedhold_, next_override_, next_ddtg_, next_backward_;
+  int64_t ddtg_release_ = 0;
+  bool release_on_active_ = false;
+  int64_t ack_at_ = -1;
+  bool ddtg_stopped_ = false, avoid_backward_ddtg_ = false;
+  int64_t last_motion_line_ = 0;
+  std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> block_ends_;
+  PlcCounts counts_;
+};
+
+// Seconds the program needs at 100 %, every block from rest to rest: more
+// than the look-ahead needs.
+double rest_to_rest_time(const std::vector<cnc::Block>& blocks, const MachineConfig& machine) {
+  double t = 0;
+  for (const cnc::Block& b : blocks) {
+    if (!b.has_motion) continue;
+    const cnc::PathSegment segment(b.motion, machine);
+    cnc::Limits lim = segment.limits();
+    lim.v = segment.programmed_velocity();
+    lim.j *= 0.5;  // next to a curvature step a block gets half its path jerk
+    t += cnc::rest_to_rest(segment.length(), lim, b.slope).duration();
+  }
+  return t;
+}
+
+bool finite(double x) { return std::isfinite(x); }
+
+}  // namespace
+
+std::string describe(const FuzzRun& run, const Failure& f) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "seed " << run.seed << " (" << to_string(run.kind) << "): " << f.invariant;
+  if (f.cycle >= 0) out << ", cycle " << f.cycle;
+  if (!f.axis.empty()) out << ", axis " << f.axis;
+  if (!f.quantity.empty()) out << ", " << f.quantity << " " << f.value << " (limit " << f.limit << ")";
+  if (f.nc_line > 0) {
+    out << ", NC line " << f.nc_line;
+    if (f.nc_line <= static_cast<int64_t>(run.program.lines.size()))
+      out << " '" << run.program.lines[f.nc_line - 1] << "'";
+  }
+  if (!f.detail.empty()) out << ": " << f.detail;
+  return out.str();
+}
+
+FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
+  FuzzRun run;
+  run.seed = seed;
+  Rng rng(seed);
+  run.kind = options.kind ? *options.kind : all_program_kinds[seed % std::size(all_program_kinds)];
+  run.override_max_percent = rng.chance(0.5) ? 100 : 120;
+  const MachineConfig machine = xyz_fuzz_machine(run.override_max_percent);
+  const double dt = machine.cycle_time_s();
+  run.program = generate_program(mix_seed(seed ^ 0x5eed), {run.kind, options.min_items, options.max_items}, machine);
+  run.expectations = !options.program_text;
+  if (options.program_text) {
+    GeneratedProgram& p = run.program;
+    p.text = *options.program_text;
+    p.lines.clear();
+    p.clear_lines.clear();
+    p.has_dps_off = false;
+    for (size_t begin = 0; begin < p.text.size();) {
+      const size_t end = std::min(p.text.find('\n', begin), p.text.size());
+      p.lines.push_back(p.text.substr(begin, end - begin));
+      begin = end + 1;
+    }
+    for (size_t i = 0; i < p.lines.size(); ++i) {
+      if (p.lines[i].find("#DISTANCE PROG START CLEAR") != std::string::npos)
+        p.clear_lines.push_back(static_cast<int64_t>(i) + 1);
+      p.has_dps_off = p.has_dps_off || p.lines[i].find("#DISTANCE PROG START OFF") != std::string::npos;
+    }
+  }
+  const GeneratedProgram& program = run.program;
+
+  // The generator's own check: the decoder takes the program and ends where
+  // the generator says.
+  const cnc::DecodedProgram decoded =
+      cnc::decode_program(program.text, machine, std::vector<double>(machine.axes.size(), 0.0));
+  if (decoded.error) {
+    run.failures.push_back(
+        {"generator", -1, "", "", 0, 0, decoded.error->nc_line, "the decoder refuses: " + decoded.error->message});
+    return run;
+  }
+  for (const cnc::Block& b : decoded.blocks)
+    if (b.has_motion) run.last_motion_line = b.nc_line;
+  for (auto b = decoded.blocks.rbegin(); run.expectations && b != decoded.blocks.rend(); ++b) {
+    if (!b->has_motion) continue;
+    if (b->motion.end != program.end_position)
+      run.failures.push_back({"generator", -1, "", "", 0, 0, b->nc_line, "end point differs from the decoder's"});
+    break;
+  }
+
+  const double t100 = rest_to_rest_time(decoded.blocks, machine);
+  const int64_t program_cycles = static_cast<int64_t>(std::ceil(t100 / dt));
+  run.chaos_cycles = !options.random_plc || rng.chance(0.15) ? 0 : rng.integer(0, program_cycles * 3 / 2 + 500);
+  if (options.chaos_cycles) run.chaos_cycles = *options.chaos_cycles;
+  // Calm: at >= 30 % override every block rest to rest, dwells, M functions
+  // acknowledged within 6 cycles, 2 s for stops and turns; 50 % margin.
+  // A short cut still running then goes up to across the program's
+  // extent at its slowest feed (DDTG-2: a G00 block's short cut takes the
+  // interrupted block's feed).
+  double slowest = std::numeric_limits<double>::infinity(), extent_sq = 0;
+  std::vector<double> low(machine.axes.size(), 0.0), high(machine.axes.size(), 0.0);
+  for (const cnc::Block& b : decoded.blocks) {
+    if (!b.has_motion) continue;
+    if (b.motion.feed > 0) slowest = std::min(slowest, b.motion.feed);
+    const double r = std::hypot(b.motion.start[0] - b.motion.center_x, b.motion.start[1] - b.motion.center_y);
+    for (size_t i = 0; i < low.size(); ++i) {
+      const double reach = b.motion.type == cnc::MotionType::arc_cw || b.motion.type == cnc::MotionType::arc_ccw ? r : 0;
+      low[i] = std::min({low[i], b.motion.end[i] - reach, b.motion.start[i] - reach});
+      high[i] = std::max({high[i], b.motion.end[i] + reach, b.motion.start[i] + reach});
+    }
+  }
+  for (size_t i = 0; i < low.size(); ++i) extent_sq += (high[i] - low[i]) * (high[i] - low[i]);
+  const double short_cut_s = std::isfinite(slowest) ? std::sqrt(extent_sq) / slowest * 1000.0 / calm_override_min : 0;
+  const double calm_s = t100 * 1000.0 / calm_override_min + short_cut_s + program.dwell_s +
+                        0.008 * static_cast<double>(program.m_functions.size()) + 2.0;
+  run.cycle_bound = run.chaos_cycles + static_cast<int64_t>(std::ceil(1.5 * calm_s / dt)) + 1000;
+  return run;
+}
+
+FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
+  FuzzRun run = prepare_channel_fuzz(seed, options);
+  if (!run.failures.empty()) return run;
+  const MachineConfig machine = xyz_fuzz_machine(run.override_max_percent);
+  const double dt = machine.cycle_time_s();
+  const GeneratedProgram& program = run.program;
+  const bool expectations = run.expectations;
+  const int64_t lines = static_cast<int64_t>(program.lines.size());
+  auto fail = [&](Failure f) { run.failures.push_back(std::move(f)); };
+
+  cnc::Channel channel(machine, program.text);
+  logger::LimitChecker checker(machine);
+  FuzzPlc plc(mix_seed(seed ^ 0x91c), run.chaos_cycles);
+  if (options.avoid_known_channel_bugs) {
+    plc.avoid_known_bug(run.last_motion_line);
+    std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> ends;
+    for (const cnc::Block& b : cnc::decode_program(program.text, machine, std::vector<double>(machine.axes.size(), 0.0)).blocks)
+      if (b.has_motion) ends[b.block_count] = {b.motion.start, b.motion.end};
+    plc.avoid_turns_at(std::move(ends));
+  }
+  HliControl control;
+  control.program_start = {true, true};
+  control.feedhold.enable_w = true;
+  control.override = {override_full, false};
+  control.m_function_ack.enable_w = true;
+
+  const size_t axes = machine.axes.size();
+  std::vector<int64_t> line_at;  // block_count_r per cycle: the NC line
+  line_at.reserve(static_cast<size_t>(std::min<int64_t>(run.cycle_bound, 1 << 20)));
+  std::vector<double> previous_position(axes, 0.0);
+  double previous_dps = 0;
+  bool previous_backward = false;
+  int64_t previous_line = 0;
+  double v_path_max_sq = 0;  // the main axes' velocity limits: the fastest the path may cover distance
+  for (const AxisConfig& a : machine.axes) v_path_max_sq += a.v_max * a.v_max;
+  const double dps_step_limit = std::sqrt(v_path_max_sq) * dt;
+  const bool dps_counts_all = !program.has_dps_off && program.clear_lines.empty();
+  bool ddtg_requested = false, motion_ended_early = false, clear_seen_before = false;
+  const size_t max_failures = 20;
+
+  auto check_events = [&](int64_t k) {
+    for (const Event& e : channel.take_events()) {
+      ++run.events;
+      if (e.id == 50810) {
+        motion_ended_early = true;
+        if (options.avoid_known_channel_bugs) plc.stop_ddtg();
+      }
+      const bool from_plc = e.nc_line == 0 && (e.message.rfind("override ", 0) == 0 ||
+                                               e.message.rfind("program start ignored", 0) == 0);
+      if (!from_plc && run.event_log.size() < 16)
+        run.event_log.push_back("cycle " + std::to_string(k) + ": " + describe(e));
+      if (e.severity == Severity::error)
+        fail({"event", k, e.axis, "", e.value, e.limit, e.nc_line, "error event: " + describe(e)});
+      else if (!from_plc && (e.nc_line < 1 || e.nc_line > lines))
+        fail({"event", k, e.axis, "", static_cast<double>(e.nc_line), static_cast<double>(lines), e.nc_line,
+              "event without an NC line of the program: " + describe(e)});
+    }
+  };
+
+  int64_t k = 0;
+  for (; k < run.cycle_bound && run.failures.size() < max_failures; ++k) {
+    try {
+      channel.step(k, control);
+    } catch (const std::exception& e) {
+      fail({"exception", k, "", "", 0, 0, previous_line, std::string("Channel::step threw: ") + e.what()});
+      break;
+    } catch (...) {
+      fail({"exception", k, "", "", 0, 0, previous_line, "Channel::step threw a non-standard exception"});
+      break;
+    }
+    if (options.observer) options.observer(k, channel, control);
+    const HliState& s = channel.hli();
+    const std::vector<cnc::AxisSetpoint>& sp = channel.setpoints();
+    const int64_t line = s.block_count_r;
+    line_at.push_back(line);
+    check_events(k);
+
+    double chord_sq = 0;
+    for (size_t i = 0; i < axes; ++i) {
+      checker.add_setpoint(static_cast<int>(i), k, sp[i].position);
+      if (!finite(sp[i].position) || !finite(sp[i].velocity) || !finite(sp[i].acceleration))
+        fail({"finite", k, machine.axes[i].name, "setpoint", sp[i].position, 0, line,
+              "position/velocity/acceleration not finite"});
+      const double d = sp[i].position - previous_position[i];
+      chord_sq += d * d;
+      previous_position[i] = sp[i].position;
+    }
+    const double dps = s.dist_prog_start / hli_units_per_mm;
+    if (!finite(dps) || !finite(s.path_velocity))
+      fail({"finite", k, "", "dist_prog_start / path_velocity", dps, 0, line, "not finite"});
+    if (line < 0 || line > lines)
+      fail({"event", k, "", "block_count_r", static_cast<double>(line), static_cast<double>(lines), 0,
+            "block_count_r is no line of the program"});
+    if (s.m_function_request_r &&
+        std::find(program.m_functions.begin(), program.m_functions.end(), s.m_function_nr_r) == program.m_functions.end())
+      fail({"event", k, "", "m_function_nr_r", static_cast<double>(s.m_function_nr_r), 0, line,
+            "an M function the program does not have"});
+
+    // DPS-1 / KRN-5 / DPS-2.
+    const bool backward = s.backward_motion.state_r;
+    // A CLEAR runs when the interpolator passes its line; the HLI may show
+    // the cleared value a cycle later (a short cut starts after the cycle's
+    // interpolation, DDTG-7 runs the skipped lines then).
+    bool cleared = clear_seen_before;
+    clear_seen_before = false;
+    for (int64_t c : program.clear_lines)
+      if (c > std::min(previous_line, line) && c <= std::max(previous_line, line)) cleared = clear_seen_before = true;
+    // The path may pass a CLEAR and turn back (backward motion) within one
+    // cycle, block_count_r showing neither: a value cleared in this cycle
+    // lies within one cycle's travel of 0.
+    if (!program.clear_lines.empty() && std::abs(dps) <= dps_step_limit * (1 + 1e-6)) cleared = true;
+    const double change = dps - previous_dps, chord = std::sqrt(chord_sq);
+    const double tol = 1e-9 + 1e-12 * std::abs(dps);
+    if (!cleared) {
+      if (!backward && !previous_backward && change < -tol)
+        fail({"dist_prog_start", k, "", "dist_prog_start change (mm) moving forward", change, 0, line,
+              "decreased while the path moved forward"});
+      if (backward && previous_backward && change > tol)
+        fail({"dist_prog_start", k, "", "dist_prog_start change (mm) moving backward", change, 0, line,
+              "increased while the path moved backward"});
+      if (std::abs(change) > dps_step_limit * (1 + 1e-6) + tol)
+        fail({"dist_prog_start", k, "", "dist_prog_start change (mm) in one cycle", change, dps_step_limit, line,
+              "more than the path can cover in one cycle"});
+      if (dps_counts_all && backward == previous_backward && std::abs(change) < chord * (1 - 1e-6) - tol)
+        fail({"dist_prog_start", k, "", "dist_prog_start change (mm) in one cycle", change, chord, line,
+              "less than the chord the main axes moved (DPS-1)"});
+    }
+    previous_dps = dps;
+    previous_backward = backward;
+    previous_line = line;
+    ddtg_requested = ddtg_requested || s.delete_distance_to_go.request_r || s.delete_distance_to_go.state_r;
+    run.short_cut = run.short_cut || s.delete_distance_to_go_active_r;
+    run.backward = run.backward || backward;
+    run.m_output = run.m_output || s.m_function_request_r;
+
+    if (channel.finished()) {
+      run.finished = true;
+      ++k;
+      break;
+    }
+    plc.answer(k, s, control);
+  }
+  run.cycles = k;
+  run.plc = plc.counts();
+  const HliState& end = channel.hli();
+  if (!run.finished && run.failures.empty()) {
+    std::ostringstream state;
+    state << "not finished after " << k << " cycles (bound " << run.cycle_bound << ", random PLC until "
+          << run.chaos_cycles << "): channel " << to_string(end.channel_state) << ", stop conditions 0x" << std::hex
+          << end.stop_conditions_r << std::dec << ", m_function_request_r " << end.m_function_request_r
+          << ", backward " << end.backward_motion.state_r << ", short cut " << end.delete_distance_to_go_active_r
+          << ", v " << end.path_velocity;
+    fail({"end", k, "", "", 0, 0, end.block_count_r, state.str()});
+  }
+  if (run.finished) {
+    if (end.channel_state != ChannelState::program_end)
+      fail({"end", k, "", "", 0, 0, end.block_count_r, std::string("ended in ") + to_string(end.channel_state)});
+    const std::vector<double> at_end = previous_position;
+    if (expectations && !motion_ended_early)
+      for (size_t i = 0; i < axes; ++i)
+        if (std::abs(at_end[i] - program.end_position[i]) > 1e-9)
+          fail({"end position", k, machine.axes[i].name, "position (mm)", at_end[i], program.end_position[i],
+                end.block_count_r, "the path did not end on the program's end point"});
+    const bool dps_comparable = !ddtg_requested && (!run.backward || dps_counts_all);
+    const double dps = end.dist_prog_start / hli_units_per_mm;
+    if (expectations && dps_comparable &&
+        std::abs(dps - program.dist_prog_start_end_mm) > 1e-6 + 1e-9 * program.path_length_mm)
+      fail({"dist_prog_start", k, "", "dist_prog_start at the end (mm)", dps, program.dist_prog_start_end_mm,
+            end.block_count_r, "not the program's path length (DPS-1, DPS-2)"});
+    // The channel commands no more motion.
+    for (int extra = 0; extra < 3; ++extra, ++k) {
+      plc.answer(k - 1, channel.hli(), control);
+      channel.step(k, control);
+      check_events(k);
+      for (size_t i = 0; i < axes; ++i)
+        if (channel.setpoints()[i].position != at_end[i] || !channel.finished())
+          fail({"end", k, machine.axes[i].name, "position (mm)", channel.setpoints()[i].position, at_end[i], 0,
+                "moved after finished()"});
+    }
+  }
+  for (const logger::Violation& v : checker.finish().violations) {
+    const int64_t cycle = std::llround(v.worst_time_s / dt);
+    const int64_t first = std::llround(v.time_s / dt);
+    std::ostringstream detail;
+    detail << v.cycles << " cycle(s) from " << first;
+    fail({"limit", cycle, v.axis, v.quantity, v.value, v.limit,
+          cycle >= 0 && cycle < static_cast<int64_t>(line_at.size()) ? line_at[cycle] : 0, detail.str()});
+  }
+  return run;
+}
+
+namespace {
+
+// What a child process sends back: the run's outcome, as text.
+void put(std::string& out, const std::string& text) { out += std::to_string(text.size()) + ":" + text; }
+void put(std::string& out, double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g;", x);
+  out += buf;
+}
+
+class Reader {
+ public:
+  explicit Reader(const std::string& in) : in_(in) {}
+  bool ok() const { return ok_; }
+  std::string text() {
+    const size_t colon = in_.find(':', at_);
+    if (colon == std::string::npos) return fail();
+    const size_t n = std::strtoull(in_.c_str() + at_, nullptr, 10);
+    if (colon + 1 + n > in_.size()) return fail();
+    std::string t = in_.substr(colon + 1, n);
+    at_ = colon + 1 + n;
+    return t;
+  }
+  double number() {
+    const size_t semi = in_.find(';', at_);
+    if (semi == std::string::npos) return fail(), 0.0;
+    const double x = std::strtod(in_.c_str() + at_, nullptr);
+    at_ = semi + 1;
+    return x;
+  }
+
+ private:
+  std::string fail() {
+    ok_ = false;
+    at_ = in_.size();
+    return {};
+  }
+  const std::string& in_;
+  size_t at_ = 0;
+  bool ok_ = true;
+};
+
+std::string serialise(const FuzzRun& run) {
+  std::string out;
+  for (double x : {static_cast<double>(run.cycles), static_cast<double>(run.finished), static_cast<double>(run.short_cut),
+                   static_cast<double>(run.backward), static_cast<double>(run.m_output), static_cast<double>(run.events),
+                   static_cast<double>(run.plc.feedhold_edges), static_cast<double>(run.plc.override_changes),
+                   static_cast<double>(run.plc.ddtg_edges), static_cast<double>(run.plc.backward_toggles),
+                   static_cast<double>(run.plc.m_acks), static_cast<double>(run.failures.size()),
+                   static_cast<double>(run.event_log.size())})
+    put(out, x);
+  for (const std::string& e : run.event_log) put(out, e);
+  for (const Failure& f : run.failures) {
+    put(out, f.invariant);
+    put(out, static_cast<double>(f.cycle));
+    put(out, f.axis);
+    put(out, f.quantity);
+    put(out, f.value);
+    put(out, f.limit);
+    put(out, static_cast<double>(f.nc_line));
+    put(out, f.detail);
+  }
+  return out;
+}
+
+bool deserialise(const std::string& in, FuzzRun& run) {
+  Reader r(in);
+  auto count = [&] { return static_cast<int64_t>(r.number()); };
+  run.cycles = count();
+  run.finished = count();
+  run.short_cut = count();
+  run.backward = count();
+  run.m_output = count();
+  run.events = count();
+  run.plc.feedhold_edges = count();
+  run.plc.override_changes = count();
+  run.plc.ddtg_edges = count();
+  run.plc.backward_toggles = count();
+  run.plc.m_acks = count();
+  const int64_t failures = count();
+  const int64_t logged = count();
+  run.event_log.clear();
+  for (int64_t i = 0; i < logged && r.ok(); ++i) run.event_log.push_back(r.text());
+  run.failures.clear();
+  for (int64_t i = 0; i < failures && r.ok(); ++i) {
+    Failure f;
+    f.invariant = r.text();
+    f.cycle = count();
+    f.axis = r.text();
+    f.quantity = r.text();
+    f.value = r.number();
+    f.limit = r.number();
+    f.nc_line = count();
+    f.detail = r.text();
+    run.failures.push_back(f);
+  }
+  return r.ok();
+}
+
+}  // namespace
+
+FuzzRun run_channel_fuzz_isolated(uint64_t seed, const FuzzOptions& options, unsigned timeout_s) {
+  FuzzRun run = prepare_channel_fuzz(seed, options);
+  if (!run.failures.empty()) return run;
+  std::fflush(stdout);
+  int fds[2];
+  if (pipe(fds) != 0) return run_channel_fuzz(seed, options);
+  const pid_t child = fork();
+  if (child < 0) {
+    close(fds[0]);
+    close(fds[1]);
+    return run_channel_fuzz(seed, options);
+  }
+  if (child == 0) {
+    close(fds[0]);
+    alarm(timeout_s);
+    const std::string out = serialise(run_channel_fuzz(seed, options));
+    std::fflush(stdout);
+    for (size_t done = 0; done < out.size();) {
+      const ssize_t n = write(fds[1], out.data() + done, out.size() - done);
+      if (n <= 0) _exit(3);
+      done += static_cast<size_t>(n);
+    }
+    close(fds[1]);
+    _exit(0);
+  }
+  close(fds[1]);
+  std::string in;
+  char buf[65536];
+  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) != 0;) {
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    in.append(buf, static_cast<size_t>(n));
+  }
+  close(fds[0]);
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    run.failures.push_back({"crash", -1, "", "", static_cast<double>(sig), 0, 0,
+                            std::string("the run died of signal ") + std::to_string(sig) + " (" + strsignal(sig) + ")" +
+                                (sig == SIGALRM ? ": no end within " + std::to_string(timeout_s) + " s" : "")});
+    return run;
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !deserialise(in, run))
+    run.failures.push_back({"crash", -1, "", "", 0, 0, 0, "the run's process ended without a result"});
+  return run;
+}
+
+}  // namespace hil::fuzz

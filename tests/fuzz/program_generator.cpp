@@ -1,0 +1,461 @@
+#include "program_generator.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <stdexcept>
+
+#include "fuzz_rng.hpp"
+
+namespace hil::fuzz {
+
+const char* to_string(ProgramKind kind) {
+  switch (kind) {
+    case ProgramKind::mixed: return "mixed";
+    case ProgramKind::lines: return "lines";
+    case ProgramKind::arcs: return "arcs";
+    case ProgramKind::steps: return "steps";
+    case ProgramKind::commands: return "commands";
+  }
+  return "?";
+}
+
+std::optional<ProgramKind> parse_program_kind(const std::string& name) {
+  for (ProgramKind kind : all_program_kinds)
+    if (name == to_string(kind)) return kind;
+  return std::nullopt;
+}
+
+MachineConfig xyz_fuzz_machine(int32_t override_max_percent) {
+  MachineConfig m;
+  m.name = "xyz_mill (fuzz)";
+  m.cycle_time_us = 1000;
+  m.override_max_percent = override_max_percent;
+  m.fb_storage_size = 1000000;
+  auto axis = [](const char* name, double v, double a, double j, double kv, double lag) {
+    AxisConfig c;
+    c.name = name;
+    c.v_max = c.v_rapid = v;
+    c.a_max = a;
+    c.j_max = j;
+    c.kv = kv;
+    c.velocity_lag_s = lag;
+    c.slep_max = 0.5;
+    return c;
+  };
+  m.axes = {axis("X", 250, 2000, 40000, 40, 0.002), axis("Y", 250, 2000, 40000, 40, 0.002),
+            axis("Z", 150, 1500, 30000, 35, 0.0025)};
+  return m;
+}
+
+namespace {
+
+using Vec = std::array<double, 3>;  // X Y Z
+
+double norm(const Vec& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+// Up to 9 decimals (1 pm), trailing zeros trimmed: what the program says.
+std::string num(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9f", v);
+  std::string s(buf);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  if (s == "-0") s = "0";
+  return s;
+}
+// What the decoder reads from it.
+double read_back(const std::string& text) { return std::strtod(text.c_str(), nullptr); }
+
+// Collinear directions whose steps stay collinear to round-off: small
+// integer vectors (a random float direction is rarely collinear within the
+// corner rule's 1e-12, so its steps are corners).
+constexpr int step_directions[][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {3, 4, 0}, {1, -2, 0},
+                                      {1, 1, 1}, {2, -1, 2}, {-4, 3, 0}, {5, 0, -1}};
+
+enum Item {
+  long_line, short_line, tiny_line, rapid, steps, arc_random, tangent_chain, full_circle, helix, tiny_arc,
+  g91_section, feed_change, m_alone, m_with_motion, dwell, marker, dps_command, slope, item_count
+};
+
+// Weights of the items per program kind (columns in Item order).
+constexpr double weights[][item_count] = {
+    //        long short tiny rapid steps arc  chain full helix tinyarc g91 feed m   m+mv dwell mark dps slope
+    /*mixed*/ {2, 2, 1, 1, 1.5, 1.5, 1.5, 0.5, 0.5, 0.5, 1, 1, 0.7, 0.7, 0.5, 0.7, 0.6, 0.5},
+    /*lines*/ {3, 3, 1, 1.5, 1, 0, 0, 0, 0, 0, 1, 1.5, 0, 0, 0, 0, 0, 0},
+    /*arcs*/ {0, 1, 0, 0, 0, 3, 3, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0},
+    /*steps*/ {0, 1, 2, 0, 6, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0},
+    /*commands*/ {1, 2, 0, 0, 0.5, 0.5, 0, 0, 0, 0, 0.3, 0.5, 2, 2, 1.5, 2, 1.5, 0},
+};
+
+class Generator {
+ public:
+  Generator(uint64_t seed, const ProgramOptions& options, const MachineConfig& machine)
+      : rng_(seed), options_(options), machine_(machine) {
+    ix_ = machine.axis_index("X");
+    iy_ = machine.axis_index("Y");
+    iz_ = machine.axis_index("Z");
+    if (ix_ < 0 || iy_ < 0 || iz_ < 0) throw std::invalid_argument("the fuzz programs need axes X, Y and Z");
+    out_.end_position.assign(machine.axes.size(), 0.0);
+    seed_ = seed;
+  }
+
+  GeneratedProgram run() {
+    out_.lines.push_back("%fuzz" + std::to_string(seed_));
+    set_feed(random_feed());
+    emit("G90 G01 F" + feed_word_);
+    const int items = static_cast<int>(rng_.integer(options_.min_items, options_.max_items));
+    for (int i = 0; i < items; ++i) item(pick_item(false));
+    if (!absolute_) emit("G90");
+    emit("M30");
+    for (const std::string& line : out_.lines) out_.text += line + "\n";
+    out_.end_position[ix_] = pos_[0];
+    out_.end_position[iy_] = pos_[1];
+    out_.end_position[iz_] = pos_[2];
+    out_.dist_prog_start_end_mm = dps_;
+    return out_;
+  }
+
+ private:
+  Item pick_item(bool in_g91) {
+    const double(&w)[item_count] = weights[static_cast<int>(options_.kind)];
+    for (;;) {
+      const Item it = static_cast<Item>(rng_.pick(w));
+      if (in_g91 && it == g91_section) continue;
+      return it;
+    }
+  }
+
+  void item(Item it) {
+    switch (it) {
+      case long_line: {
+        // Long, but no more than ~0.6 s at the feed in force.
+        const double l = std::min(rng_.log_uniform(5, 300), std::max(5.0, feed_ * 0.6));
+        line_by(direction(rng_.chance(0.2)), l, 1);
+        break;
+      }
+      case short_line: line_by(direction(rng_.chance(0.2)), rng_.log_uniform(0.01, 5), 1); break;
+      case tiny_line: line_by(direction(rng_.chance(0.3)), rng_.log_uniform(0.001, 0.01), 1); break;
+      case rapid: line_by(direction(rng_.chance(0.4)), rng_.log_uniform(0.5, 150), 0); break;
+      case steps: collinear_steps(); break;
+      case arc_random: random_arc(rng_.log_uniform(0.05, 60), 0); break;
+      case tangent_chain: chain(); break;
+      case full_circle: full(); break;
+      case helix: random_arc(rng_.log_uniform(0.5, 30), rng_.uniform(-5, 5)); break;
+      case tiny_arc: random_arc(rng_.log_uniform(0.001, 0.01), 0); break;
+      case g91_section: relative_section(); break;
+      case feed_change:
+        set_feed(random_feed());
+        if (rng_.chance(0.5)) emit("F" + feed_word_);
+        else feed_on_next_ = true;
+        break;
+      case m_alone: emit(m_words()); break;
+      case m_with_motion:
+        extra_ = " " + m_words();
+        if (!line_by(direction(false), rng_.log_uniform(0.01, 20), 1)) emit(extra_.substr(1));
+        extra_.clear();
+        break;
+      case dwell: {
+        const double t = std::round(rng_.log_uniform(0.001, 0.3) * 1000) / 1000;
+        out_.dwell_s += t;
+        emit("#TIME " + num(t));
+        break;
+      }
+      case marker: {
+        const int form = static_cast<int>(rng_.integer(0, 3));
+        const int end = static_cast<int>(rng_.integer(1, 15));
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "%02X", end);
+        emit(form == 0 ? std::string("#DEL DIST2GO")
+             : form == 1 ? "#DEL DIST2GO [END=" + std::to_string(end) + "]"
+             : form == 2 ? std::string("#DEL DIST2GO [END='16#") + hex + "']"
+                         : std::string("#DEL DIST2GO []"));
+        break;
+      }
+      case dps_command: {
+        const size_t which = rng_.pick({1.0, 1.0, 0.7});
+        if (which == 0) {
+          emit("#DISTANCE PROG START ON");
+          counting_ = true;
+        } else if (which == 1) {
+          emit("#DISTANCE PROG START OFF");
+          counting_ = false;
+          out_.has_dps_off = true;
+        } else {
+          emit("#DISTANCE PROG START CLEAR");
+          dps_ = 0;
+          out_.clear_lines.push_back(static_cast<int64_t>(out_.lines.size()));
+        }
+        break;
+      }
+      case slope: emit(rng_.chance(0.5) ? "#SLOPE[TYPE=SIN2]" : "#SLOPE [TYPE=TRAPEZ]"); break;
+      case item_count: break;
+    }
+  }
+
+  std::string m_words() {
+    std::string words;
+    const int count = rng_.chance(0.2) ? 2 : 1;
+    for (int i = 0; i < count; ++i) {
+      const int m = static_cast<int>(rng_.integer(10, 20));
+      out_.m_functions.push_back(m);
+      words += (i ? " M" : "M") + std::to_string(m);
+    }
+    return words;
+  }
+
+  double random_feed() {
+    // mm/min; mostly 600 .. 15000 (10 .. 250 mm/s), now and then slow or
+    // above the axes' limits.
+    const size_t which = rng_.pick({0.1, 0.8, 0.1});
+    const double f = which == 0 ? rng_.uniform(60, 600) : which == 1 ? rng_.log_uniform(600, 15000)
+                                                                     : rng_.uniform(15000, 30000);
+    return std::round(f);
+  }
+  void set_feed(double f_mm_min) {
+    feed_word_ = std::to_string(static_cast<int64_t>(f_mm_min));
+    feed_ = read_back(feed_word_) / 60.0;
+  }
+
+  // A unit direction: mostly in XY, now and then with Z or along one axis;
+  // towards the origin when the position wanders far.
+  Vec direction(bool with_z) {
+    Vec d{};
+    if (rng_.chance(0.25)) {
+      d[rng_.integer(0, with_z ? 2 : 1)] = rng_.chance(0.5) ? 1 : -1;
+    } else {
+      const double angle = rng_.uniform(0, 2 * M_PI);
+      d = {std::cos(angle), std::sin(angle), with_z ? rng_.uniform(-0.5, 0.5) : 0.0};
+    }
+    if (pos_[0] * d[0] + pos_[1] * d[1] > 0 && std::hypot(pos_[0], pos_[1]) > 250) {
+      d[0] = -d[0];
+      d[1] = -d[1];
+    }
+    if (pos_[2] * d[2] > 0 && std::abs(pos_[2]) > 50) d[2] = -d[2];
+    const double n = norm(d);
+    for (double& c : d) c /= n;
+    return d;
+  }
+
+  void emit(const std::string& code) {
+    const int64_t line = static_cast<int64_t>(out_.lines.size()) + 1;
+    out_.lines.push_back("N" + std::to_string(line * 10) + " " + code);
+  }
+
+  // The axis words of a move to `want` (G90 absolute, G91 relative) and the
+  // position the decoder will compute from them.
+  std::string axis_words(const Vec& want, Vec& got, bool xy = true) {
+    static const char letters[] = {'X', 'Y', 'Z'};
+    std::string words;
+    got = pos_;
+    for (int k = 0; k < 3; ++k) {
+      if (!xy && k < 2) continue;
+      const bool changed = want[k] != pos_[k];
+      if (!changed && !rng_.chance(0.1)) continue;  // now and then an axis that does not move
+      const std::string text = num(absolute_ ? want[k] : want[k] - pos_[k]);
+      const double value = read_back(text);
+      got[k] = absolute_ ? value : pos_[k] + value;
+      words += std::string(" ") + letters[k] + text;
+    }
+    return words;
+  }
+
+  std::string feed_words() {
+    if (!feed_on_next_ && !rng_.chance(0.1)) return "";
+    feed_on_next_ = false;
+    return " F" + feed_word_;
+  }
+
+  // G00 (g = 0) or G01 (g = 1) by `length` along `d`; false if rounding left no motion.
+  bool line_by(const Vec& d, double length, int g) {
+    Vec want;
+    for (int k = 0; k < 3; ++k) want[k] = pos_[k] + d[k] * length;
+    return line_to(want, g);
+  }
+  bool line_to(const Vec& want, int g) {
+    Vec got;
+    const std::string words = axis_words(want, got);
+    Vec step{got[0] - pos_[0], got[1] - pos_[1], got[2] - pos_[2]};
+    const double length = norm(step);
+    if (length == 0) return false;
+    emit(std::string(g == 0 ? "G00" : "G01") + words + (g == 0 ? "" : feed_words()) + extra_);
+    moved(got, length);
+    return true;
+  }
+
+  void moved(const Vec& got, double length) {
+    pos_ = got;
+    ++out_.motion_blocks;
+    out_.path_length_mm += length;
+    if (counting_) dps_ += length;
+  }
+
+  // G02/G03 with the centre at `centre_offset` from the start, to
+  // `end_angle` (radians about the centre); none: a full circle.
+  // `quadrant_end`: the end lies exactly on an axis through the centre
+  // (tangent chains), quadrant 0..3 = +X, +Y, -X, -Y.
+  bool arc(bool ccw, double i, double j, std::optional<double> end_angle, double dz, int quadrant_end = -1) {
+    const std::string ti = num(i), tj = num(j);
+    const double cx = pos_[0] + read_back(ti), cy = pos_[1] + read_back(tj);
+    const double r = std::hypot(pos_[0] - cx, pos_[1] - cy);
+    if (r < 1e-4) return false;
+    const double a0 = std::atan2(pos_[1] - cy, pos_[0] - cx);
+    Vec want = pos_;
+    want[2] += dz;
+    double sweep = 2 * M_PI, a1 = a0;
+    if (end_angle || quadrant_end >= 0) {
+      if (quadrant_end >= 0) {
+        const double off[4][2] = {{r, 0}, {0, r}, {-r, 0}, {0, -r}};
+        want[0] = cx + off[quadrant_end][0];
+        want[1] = cy + off[quadrant_end][1];
+        a1 = quadrant_end * M_PI / 2;
+      } else {
+        a1 = *end_angle;
+        want[0] = cx + r * std::cos(a1);
+        want[1] = cy + r * std::sin(a1);
+      }
+      sweep = std::fmod(ccw ? a1 - a0 : a0 - a1, 2 * M_PI);
+      if (sweep < 0) sweep += 2 * M_PI;
+      // A sweep next to 0 or 2 pi could read as a full circle or a sliver
+      // after rounding: not generated (the intended length must be right).
+      if (sweep < 0.02 || sweep > 2 * M_PI - 0.02) return false;
+    }
+    Vec got;
+    std::string words = end_angle || quadrant_end >= 0 ? axis_words(want, got) : axis_words(want, got, false);
+    if (!end_angle && quadrant_end < 0) {  // full circle: X and Y stay
+      got[0] = pos_[0];
+      got[1] = pos_[1];
+    }
+    const double r_end = std::hypot(got[0] - cx, got[1] - cy);
+    // The decoder allows 1e-3 mm; the kernel blends the radius along the
+    // arc. Kept at round-off, so that the path is the intended circle.
+    if (std::abs(r - r_end) > 1e-9 * (1 + r)) return false;
+    const double z = got[2] - pos_[2];
+    const double planar = r * sweep, length = std::hypot(planar, z);
+    emit(std::string(ccw ? "G03" : "G02") + words + " I" + ti + " J" + tj + feed_words() + extra_);
+    moved(got, length);
+    return true;
+  }
+
+  void random_arc(double r, double dz) {
+    const double a0 = rng_.uniform(0, 2 * M_PI), sweep = rng_.uniform(0.05, 2 * M_PI - 0.05);
+    const bool ccw = rng_.chance(0.5);
+    // The centre seen from the start.
+    const double i = -r * std::cos(a0), j = -r * std::sin(a0);
+    arc(ccw, i, j, a0 + (ccw ? sweep : -sweep), dz);
+  }
+
+  void full() {
+    const double r = rng_.log_uniform(0.01, 20), a0 = rng_.uniform(0, 2 * M_PI);
+    arc(rng_.chance(0.5), -r * std::cos(a0), -r * std::sin(a0), std::nullopt, rng_.chance(0.3) ? rng_.uniform(-3, 3) : 0);
+  }
+
+  // Lines along X or Y and quarter/half arcs tangent to them and to each
+  // other: the transitions are tangent, the curvature steps (line <-> arc,
+  // S-bends, radius changes); the corner rule's curvature part.
+  void chain() {
+    // Start along an axis: a short line sets the direction exactly.
+    int q = static_cast<int>(rng_.integer(0, 3));  // direction +X, +Y, -X, -Y
+    const double unit[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    auto straight = [&](double l) {
+      Vec want = pos_;
+      want[0] += unit[q][0] * l;
+      want[1] += unit[q][1] * l;
+      line_to(want, 1);
+    };
+    straight(std::round(rng_.log_uniform(0.1, 20) * 1000) / 1000);
+    const int pieces = static_cast<int>(rng_.integer(1, 6));
+    for (int p = 0; p < pieces; ++p) {
+      if (rng_.chance(0.3)) {
+        straight(std::round(rng_.log_uniform(0.01, 20) * 1000) / 1000);
+        continue;
+      }
+      const bool ccw = rng_.chance(0.5);
+      const double r = std::round(rng_.log_uniform(0.05, 40) * 1000) / 1000;
+      // The centre lies to the left (G03) or right (G02) of the direction q.
+      const int to_centre = ccw ? (q + 1) % 4 : (q + 3) % 4;
+      const int quarters = static_cast<int>(rng_.integer(1, 3));
+      // The start lies at the quadrant opposite to_centre, seen from the centre.
+      const int start_quadrant = (to_centre + 2) % 4;
+      const int end_quadrant = ((ccw ? start_quadrant + quarters : start_quadrant - quarters) % 4 + 4) % 4;
+      if (arc(ccw, unit[to_centre][0] * r, unit[to_centre][1] * r, std::nullopt, 0, end_quadrant))
+        q = ccw ? (end_quadrant + 1) % 4 : (end_quadrant + 3) % 4;  // the tangent there
+    }
+  }
+
+  // Short collinear steps at a high feed, then a reversal (or a sharp
+  // corner): the path must brake within the steps for the turn.
+  void collinear_steps() {
+    Vec d{};
+    bool exact = rng_.chance(0.85);
+    if (exact) {
+      const int* v = step_directions[rng_.integer(0, std::size(step_directions) - 1)];
+      const double s = rng_.chance(0.5) ? 1 : -1;
+      d = {s * v[0], s * v[1], s * v[2]};
+    } else {
+      d = direction(rng_.chance(0.2));
+    }
+    const size_t scale = rng_.pick({1.0, 2.0, 2.0, 1.0});
+    const double h = scale == 0 ? 0.001 : scale == 1 ? 0.01 * rng_.integer(1, 50)
+                   : scale == 2 ? 0.1 * rng_.integer(1, 20) : rng_.integer(1, 5);
+    const int n = static_cast<int>(rng_.integer(2, 12));
+    const bool even = rng_.chance(0.6);
+    if (rng_.chance(0.7)) {
+      set_feed(std::round(rng_.uniform(3000, 15000)));
+      feed_on_next_ = true;
+    }
+    const Vec start = pos_;
+    int64_t m = 0;
+    for (int i = 0; i < n; ++i) {
+      m += even ? 1 : rng_.integer(1, 4);
+      Vec want;
+      for (int k = 0; k < 3; ++k) want[k] = exact ? start[k] + d[k] * h * m : pos_[k] + d[k] * h;
+      line_to(want, 1);
+    }
+    // The turn: straight back (a reversal), or a sharp corner.
+    if (rng_.chance(0.8)) {
+      const int64_t back = rng_.integer(1, m + 3);
+      Vec want;
+      for (int k = 0; k < 3; ++k) want[k] = exact ? start[k] + d[k] * h * (m - back) : pos_[k] - d[k] * h * back;
+      line_to(want, 1);
+    } else {
+      const Vec e = direction(false);
+      line_by({-d[0] / norm(d) + 0.2 * e[0], -d[1] / norm(d) + 0.2 * e[1], -d[2] / norm(d)}, h * n, 1);
+    }
+  }
+
+  void relative_section() {
+    emit(rng_.chance(0.5) ? "G91" : "G91 F" + feed_word_);
+    absolute_ = false;
+    const int items = static_cast<int>(rng_.integer(1, 6));
+    for (int i = 0; i < items; ++i) item(pick_item(true));
+    emit("G90");
+    absolute_ = true;
+  }
+
+  Rng rng_;
+  ProgramOptions options_;
+  const MachineConfig& machine_;
+  uint64_t seed_ = 0;
+  int ix_ = 0, iy_ = 1, iz_ = 2;
+  GeneratedProgram out_;
+  Vec pos_{0, 0, 0};
+  bool absolute_ = true;
+  double feed_ = 0;  // mm/s
+  std::string feed_word_;
+  bool feed_on_next_ = false;  // write F on the next motion line
+  std::string extra_;          // words appended to the next motion line (M functions)
+  bool counting_ = true;
+  double dps_ = 0;
+};
+
+}  // namespace
+
+GeneratedProgram generate_program(uint64_t seed, const ProgramOptions& options, const MachineConfig& machine) {
+  return Generator(seed, options, machine).run();
+}
+
+}  // namespace hil::fuzz
