@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "value_ranges.hpp"
+
 namespace hil::cnc {
 
 CoordinateSystem CoordinateSystem::parse(const std::string& components, const ParameterValues& parameters) {
@@ -18,6 +20,11 @@ CoordinateSystem CoordinateSystem::parse(const std::string& components, const Pa
     if (comma == std::string::npos) break;
     begin = comma + 1;
   }
+  for (size_t k = 0; k < 3; ++k) decoding::checked_length(value[k], "#CS offset v" + std::to_string(k + 1));
+  for (size_t k = 3; k < 6; ++k)
+    if (!(std::abs(value[k]) <= decoding::max_cs_angle_deg))
+      throw std::invalid_argument("#CS angle φ" + std::to_string(k - 2) + " must be within ±" +
+                                  std::to_string(static_cast<int>(decoding::max_cs_angle_deg)) + "°");
   constexpr double degree = M_PI / 180.0;
   CoordinateSystem cs;
   cs.transform_ = Eigen::Translation3d(value[0], value[1], value[2]) *

@@ -7,7 +7,11 @@
 // `;` and `( )` comments, `%name`. A block
 // whose axes do not move is no motion block. Anything else is an
 // error with its line number; the blocks before it are still returned, so
-// the channel can run exactly what was decoded correctly.
+// the channel can run exactly what was decoded correctly. A number outside
+// the ranges of value_ranges.hpp (1 km, F, N, G, M, P, ...) is an error
+// too, and so is a control character in a line: every number of a block
+// is finite and in range.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,7 +28,12 @@ struct DecodedProgram {
 };
 
 // `start` are the axis positions at program start (mm, machine axis order).
+// Start positions out of range are an error with nc_line 0.
 DecodedProgram decode_program(const std::string& text, const MachineConfig& machine,
                               const std::vector<double>& start);
+// The same, an error once more than `max_lines_read` lines are read ($FOR
+// loops; 10,000,000 above): for tests.
+DecodedProgram decode_program(const std::string& text, const MachineConfig& machine, const std::vector<double>& start,
+                              int64_t max_lines_read);
 
 }  // namespace hil::cnc

@@ -1,12 +1,14 @@
 #include "line_decoder.hpp"
 
-#include <cstdlib>
+#include <iomanip>
 #include <optional>
-#include <regex>
+#include <sstream>
 #include <stdexcept>
 
+#include "line_cursor.hpp"
 #include "motion_target.hpp"
 #include "nc_commands.hpp"
+#include "value_ranges.hpp"
 #include "words.hpp"
 
 namespace hil::cnc::decoding {
@@ -29,7 +31,7 @@ int axis_of(const Word& w, const MachineConfig& machine) {
 
 // Modal G codes act at once; the motion G code waits for G92's check.
 void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
-  const int g = integer_code(w);
+  const int g = static_cast<int>(integer_code(w, max_g_code));
   if (g <= 3) {
     if (programmed.motion) throw LineError{"two motion G codes in one block"};
     programmed.motion = static_cast<MotionType>(g);
@@ -47,13 +49,24 @@ void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
 }
 
 void add_m_function(const Word& w, const DecoderState& state, Block& block) {
-  const int m = integer_code(w);
+  const int m = static_cast<int>(integer_code(w, max_m_function));
   if (m == 30) {
     block.program_end = true;
     return;
   }
   const auto pre_output = state.pre_output_mm.find(m);
   block.m_functions.push_back({m, pre_output == state.pre_output_mm.end() ? 0.0 : pre_output->second});
+}
+
+// F in mm/min, within [min_feed_mm_min, max_feed_mm_min].
+double feed_mm_s(const Word& w) {
+  if (!(w.value >= min_feed_mm_min && w.value <= max_feed_mm_min)) {
+    std::ostringstream msg;
+    msg << std::setprecision(10) << "feed '" << w.text << "' is out of range " << min_feed_mm_min << " .. "
+        << max_feed_mm_min << " mm/min";
+    throw LineError{msg.str()};
+  }
+  return w.value / 60.0;
 }
 
 void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& programmed, Block& block) {
@@ -64,20 +77,17 @@ void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& prog
   switch (w.letter) {
     case 'N':
       if (!first) throw LineError{"'" + w.text + "' must be the first word of the block"};
-      block.block_nr = integer_code(w);
+      block.block_nr = integer_code(w, max_block_nr);
       break;
     case 'G': apply_g_code(w, state.modal, programmed); break;
-    case 'F':
-      if (!(w.value > 0)) throw LineError{"feed '" + w.text + "' must be > 0"};
-      state.modal.feed = w.value / 60.0;  // F is mm/min
-      break;
+    case 'F': state.modal.feed = feed_mm_s(w); break;
     case 'M': add_m_function(w, state, block); break;
-    case 'I': programmed.i = w.value; break;
-    case 'J': programmed.j = w.value; break;
+    case 'I': programmed.i = checked_length(w.value, "I"); break;
+    case 'J': programmed.j = checked_length(w.value, "J"); break;
     default: {
       const int axis = axis_of(w, state.machine);
       if (programmed.axes[axis]) throw LineError{std::string("axis ") + w.letter + " programmed twice"};
-      programmed.axes[axis] = w.value;
+      programmed.axes[axis] = checked_length(w.value, std::string_view(&w.letter, 1));
     }
   }
 }
@@ -102,6 +112,7 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
   ModalState& modal = state.modal;
   if (programmed.motion) modal.motion = *programmed.motion;
   const std::vector<double> target = programmed_target(programmed.axes, state);
+  check_position(target, state.machine, "end point");  // after G91, G92 and #CS: each word may be in range, the sum not
   const bool is_arc = modal.motion == MotionType::arc_cw || modal.motion == MotionType::arc_ccw;
   const bool has_centre = programmed.i || programmed.j;
   if (has_centre && !is_arc) throw LineError{"I/J are only allowed with G02/G03"};
@@ -127,31 +138,53 @@ void decode_command_block(const std::string& code, size_t hash, DecoderState& st
   const bool n_only =
       before.empty() || (before.size() == 1 && before[0].letter == 'N' && !before[0].is_axis_command());
   if (!n_only) throw LineError{"a '#' command must stand alone in its block (after the N number)"};
-  if (!before.empty()) block.block_nr = integer_code(before[0]);
+  if (!before.empty()) block.block_nr = integer_code(before[0], max_block_nr);
   decode_nc_command(upper_words(code.substr(hash)), state, block);
+}
+
+// What the left side of an assignment names: P<n>, or the pre-output
+// path of M<m>.
+struct AssignmentTarget {
+  std::optional<int64_t> parameter, m_function;
+};
+
+// P<n> or V.G.M_FCT[<m>].PRE_OUTP_PATH after an optional N number, and
+// nothing else; either number out of range is none.
+AssignmentTarget assignment_target(const std::string& left) {
+  LineCursor cursor(left);
+  cursor.skip_block_nr();
+  AssignmentTarget target;
+  if (cursor.take_keyword("V.G.M_FCT")) {
+    if (!cursor.take('[')) return {};
+    cursor.skip_blanks();
+    target.m_function = whole_number(cursor.take_digits(), max_m_function);
+    if (!cursor.take_keyword("].PRE_OUTP_PATH")) return {};
+  } else if (cursor.take('P')) {
+    target.parameter = whole_number(cursor.take_digits(), max_p_parameter);
+  }
+  if (!cursor.at_end()) return {};
+  return target;
 }
 
 // P<n> = <expression> (a decoder variable) or
 // V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm> (P-CHAN-00070 for M<m> from here
 // on), after an optional N number. Decoder work: no block.
 void assign_parameter(const std::string& code, size_t equals, DecoderState& state) {
-  static const std::regex assignment(
-      R"(\s*(?:[Nn]\d+\s+)?(?:[Pp](\d+)|V\.G\.M_FCT\[\s*(\d+)\s*\]\.PRE_OUTP_PATH)\s*)", std::regex::icase);
-  std::smatch match;
-  const std::string left = code.substr(0, equals);
-  if (!std::regex_match(left, match, assignment))
-    throw LineError{"'=' is only allowed in P<n> = <expression> and V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm>"};
+  const AssignmentTarget target = assignment_target(code.substr(0, equals));
+  if (!target.parameter && !target.m_function)
+    throw LineError{"'=' is only allowed in P<n> = <expression> (n 0.." + std::to_string(max_p_parameter) +
+                    ") and V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm>"};
   double value = 0;
   try {
     value = evaluate_expression(code.substr(equals + 1), state.parameters);
   } catch (const std::invalid_argument& e) {
     throw LineError{e.what()};
   }
-  if (match[1].matched) {
-    state.parameters[std::atoi(match[1].str().c_str())] = value;
+  if (target.parameter) {
+    state.parameters[static_cast<int>(*target.parameter)] = value;
   } else {
     if (value < 0) throw LineError{"PRE_OUTP_PATH must be >= 0 mm"};
-    state.pre_output_mm[std::atoi(match[2].str().c_str())] = value;
+    state.pre_output_mm[static_cast<int>(*target.m_function)] = checked_length(value, "PRE_OUTP_PATH");
   }
 }
 
@@ -176,11 +209,9 @@ bool decode_line(const std::string& line, int64_t line_nr, int64_t lines_read, D
     return true;
   }
   const BlockWords programmed = apply_words(split_words(code), state, block);
-  if (programmed.position_preset) {
-    preset_position(programmed, state);
-    return true;
-  }
-  decode_motion(programmed, state, block);
+  // G92's M functions (and M30) are the block's, as with any other block.
+  if (programmed.position_preset) preset_position(programmed, state);
+  else decode_motion(programmed, state, block);
   if (block.has_motion || block.has_command()) out.push_back(block);
   return !block.program_end;
 }

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <string>
 
+#include "value_ranges.hpp"
 #include "words.hpp"
 
 namespace hil::cnc::decoding {
@@ -39,6 +40,7 @@ void check_on_circle(const Motion& m, int x, int y) {
   const double r_start = std::hypot(m.start[x] - m.center_x, m.start[y] - m.center_y);
   const double r_end = std::hypot(m.end[x] - m.center_x, m.end[y] - m.center_y);
   if (r_start < 1e-6) throw LineError{"arc radius is zero"};
+  checked_length(r_start, "arc radius");
   if (std::abs(r_start - r_end) > 1e-3 + 1e-6 * r_start) {
     std::ostringstream msg;
     msg << "arc end point does not lie on the circle (start radius " << r_start << " mm, end radius " << r_end
@@ -94,6 +96,8 @@ void set_arc_centre(Motion& m, std::optional<double> i, std::optional<double> j,
     m.center_y = m.start[y] + j.value_or(0);
   }
   if (state.modal.centre_correction) correct_centre(m, x, y);
+  checked_length(m.center_x, "arc centre X");
+  checked_length(m.center_y, "arc centre Y");
   check_on_circle(m, x, y);
 }
 

@@ -12,6 +12,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "value_ranges.hpp"
+
 namespace hil::cnc::decoding {
 namespace {
 
@@ -94,13 +96,18 @@ uint32_t end_marker(const std::string& arguments) {
   if (value.size() >= 2 && value.front() == '\'' && value.back() == '\'') value = value.substr(1, value.size() - 2);
   int base = 10;
   if (const size_t hash = value.find('#'); hash != std::string::npos) {
-    base = std::atoi(value.substr(0, hash).c_str());
+    const std::string prefix = value.substr(0, hash);
+    base = prefix == "2" ? 2 : prefix == "8" ? 8 : prefix == "16" ? 16 : 0;
     value = value.substr(hash + 1);
-    if (base != 2 && base != 8 && base != 16) throw LineError{"#DEL DIST2GO END: base must be 2#, 8# or 16#"};
+    if (base == 0) throw LineError{"#DEL DIST2GO END: base must be 2#, 8# or 16#"};
   }
+  // Digits only: strtoull would also take a sign, blanks or 0x.
+  const bool digits = !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
+    return std::isxdigit(static_cast<unsigned char>(c)) != 0;
+  });
   char* end = nullptr;
-  const unsigned long long mask = value.empty() ? 0 : std::strtoull(value.c_str(), &end, base);
-  if (value.empty() || *end != '\0' || mask > 0xFFFFFFFFull || value[0] == '-')
+  const unsigned long long mask = digits ? std::strtoull(value.c_str(), &end, base) : 0;
+  if (!digits || *end != '\0' || mask > 0xFFFFFFFFull)
     throw LineError{"#DEL DIST2GO END '" + value + "' is not a 32-bit mask"};
   return static_cast<uint32_t>(mask);
 }
@@ -114,13 +121,29 @@ void decode_del_dist2go(const std::string& arguments, DecoderState&, Block& bloc
 void decode_time(const std::string& arguments, DecoderState& state, Block& block) {
   try {
     const double seconds = evaluate_expression(arguments, state.parameters);
-    if (seconds > 0) {
+    if (seconds > 0 && seconds <= max_dwell_s) {
       block.dwell_s = seconds;
       return;
     }
   } catch (const std::invalid_argument&) {
   }
-  throw LineError{"#TIME needs a dwell time > 0 in s"};
+  throw LineError{"#TIME needs a dwell time > 0 and <= " + std::to_string(static_cast<int64_t>(max_dwell_s)) + " s"};
+}
+
+// What stands in the [..] groups of `text`, which holds nothing else but
+// blanks between them (#CS ONX [1] is no #CS ON); brackets inside a group
+// belong to its expressions.
+std::vector<std::string> bracket_groups(const std::string& text) {
+  std::vector<std::string> groups;
+  int depth = 0;
+  for (size_t i = 0, open = 0; i < text.size(); ++i) {
+    if (text[i] == '[' && depth++ == 0) open = i;
+    else if (text[i] == ']' && depth > 0 && --depth == 0) groups.push_back(text.substr(open + 1, i - open - 1));
+    else if (depth == 0 && text[i] != ' ')
+      throw LineError{"#CS ON: '" + text.substr(i, 1) + "' outside [v1,v2,v3,φ1,φ2,φ3]"};
+  }
+  if (depth != 0) throw LineError{"#CS ON: '[' is not closed"};
+  return groups;
 }
 
 // #CS ON [v1,v2,v3,φ1,φ2,φ3], #CS ON [<id>] [..], #CS OFF; one CS at a time.
@@ -132,12 +155,7 @@ void decode_coordinate_system(const std::string& arguments, DecoderState& state,
     return;
   }
   if (arguments.rfind("ON", 0) != 0) throw LineError{"#CS takes ON [v1,v2,v3,φ1,φ2,φ3] or OFF"};
-  std::vector<std::string> groups;
-  for (size_t open = arguments.find('['); open != std::string::npos; open = arguments.find('[', open + 1)) {
-    const size_t close = arguments.find(']', open);
-    if (close == std::string::npos) throw LineError{"#CS ON: '[' is not closed"};
-    groups.push_back(arguments.substr(open + 1, close - open - 1));
-  }
+  const std::vector<std::string> groups = bracket_groups(arguments.substr(2));
   if (groups.empty() || groups.size() > 2)
     throw LineError{"#CS ON needs [v1,v2,v3,φ1,φ2,φ3], optionally after [<CS-ID>] (stored CS are not supported yet)"};
   if (state.cs)

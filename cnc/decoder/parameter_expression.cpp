@@ -3,7 +3,12 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
+#include <string_view>
+
+#include "value_ranges.hpp"
+#include "words.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -11,6 +16,9 @@ namespace {
 // Recursive descent: expression = term {(+|-) term}; term = factor {(*|/)
 // factor}; factor = [-|+] (number | P<n> | "[" expression "]"). Round
 // brackets are comments in NC programs, so grouping uses square ones.
+// Every intermediate result must be finite (1e300 * 1e300 is an error,
+// not inf), and nesting is bounded, so a line of 100,000 '[' or '-' is an
+// error rather than a stack overflow.
 class Parser {
  public:
   Parser(const std::string& text, const ParameterValues& parameters) : text_(text), parameters_(parameters) {}
@@ -37,11 +45,19 @@ class Parser {
     }
     return false;
   }
+  double checked(double value, char operation) const {
+    if (!std::isfinite(value)) fail(std::string("result of '") + operation + "' out of range");
+    return value;
+  }
+  size_t digits_from(size_t pos) const {
+    while (pos < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos]))) ++pos;
+    return pos;
+  }
   double expression() {
     double value = term();
     for (;;) {
-      if (take('+')) value += term();
-      else if (take('-')) value -= term();
+      if (take('+')) value = checked(value + term(), '+');
+      else if (take('-')) value = checked(value - term(), '-');
       else return value;
     }
   }
@@ -49,17 +65,23 @@ class Parser {
     double value = factor();
     for (;;) {
       if (take('*')) {
-        value *= factor();
+        value = checked(value * factor(), '*');
       } else if (take('/')) {
         const double divisor = factor();
         if (divisor == 0) fail("division by zero");
-        value /= divisor;
+        value = checked(value / divisor, '/');
       } else {
         return value;
       }
     }
   }
   double factor() {
+    if (++depth_ > max_depth) fail("nested deeper than " + std::to_string(max_depth) + " levels");
+    const double value = signed_factor();
+    --depth_;
+    return value;
+  }
+  double signed_factor() {
     if (take('-')) return -factor();
     if (take('+')) return factor();
     if (take('[')) {
@@ -68,27 +90,45 @@ class Parser {
       return value;
     }
     skip_space();
-    if (pos_ < text_.size() && (text_[pos_] == 'P' || text_[pos_] == 'p')) {
-      ++pos_;
-      const size_t start = pos_;
-      while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
-      if (start == pos_) fail("P needs a number");
-      const int n = std::atoi(text_.substr(start, pos_ - start).c_str());
-      const auto p = parameters_.find(n);
-      if (p == parameters_.end()) fail("P" + std::to_string(n) + " has no value yet");
-      return p->second;
+    if (pos_ < text_.size() && (text_[pos_] == 'P' || text_[pos_] == 'p')) return parameter();
+    return number();
+  }
+  double parameter() {
+    const size_t start = ++pos_;
+    pos_ = digits_from(pos_);
+    if (start == pos_) fail("P needs a number");
+    const std::optional<int64_t> n =
+        decoding::whole_number(std::string_view(text_).substr(start, pos_ - start), decoding::max_p_parameter);
+    if (!n) fail("P parameter numbers are 0.." + std::to_string(decoding::max_p_parameter));
+    const auto p = parameters_.find(static_cast<int>(*n));
+    if (p == parameters_.end()) fail("P" + std::to_string(*n) + " has no value yet");
+    return p->second;
+  }
+  // Decimal only, [digits][.digits][e[+-]digits]: not strtod's nan, inf or 0x1p3.
+  double number() {
+    const size_t start = pos_;
+    size_t end = digits_from(pos_);
+    if (end < text_.size() && text_[end] == '.') end = digits_from(end + 1);
+    if (end == start || (end == start + 1 && text_[start] == '.'))
+      fail(pos_ < text_.size() ? "a number or P<n> expected" : "incomplete");
+    if (end < text_.size() && (text_[end] == 'e' || text_[end] == 'E')) {
+      size_t exponent = end + 1;
+      if (exponent < text_.size() && (text_[exponent] == '+' || text_[exponent] == '-')) ++exponent;
+      if (digits_from(exponent) > exponent) end = digits_from(exponent);
     }
-    const char* begin = text_.c_str() + pos_;
-    char* end = nullptr;
-    const double value = std::strtod(begin, &end);
-    if (end == begin || !std::isfinite(value)) fail(pos_ < text_.size() ? "a number or P<n> expected" : "incomplete");
-    pos_ += static_cast<size_t>(end - begin);
+    const std::string literal = text_.substr(start, end - start);
+    const double value = std::strtod(literal.c_str(), nullptr);
+    if (!std::isfinite(value)) fail("number '" + decoding::printable(literal, 24) + "' out of range");
+    pos_ = end;
     return value;
   }
+
+  static constexpr int max_depth = 100;
 
   const std::string& text_;
   const ParameterValues& parameters_;
   size_t pos_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace

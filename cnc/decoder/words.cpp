@@ -1,7 +1,9 @@
 #include "words.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <sstream>
@@ -10,6 +12,14 @@ namespace hil::cnc::decoding {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
+bool is_control(char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }
+
+// "0x00" of a control character.
+std::string hex_code(char c) {
+  char code[8];
+  std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(c)));
+  return code;
+}
 
 // The ']' that closes the '[' at code[open] (expressions nest them), or npos.
 size_t closing_bracket(const std::string& code, size_t open) {
@@ -38,7 +48,7 @@ std::optional<Word> axis_command_word(const std::string& code, char letter, size
   if (close == std::string::npos)
     throw LineError{std::string("axis command '") + letter + "[" + command_keyword(content) + "' has no closing ']'"};
   end = close + 1;
-  return Word{letter, 0.0, code.substr(i, end - i), content};
+  return Word{letter, 0.0, printable(code.substr(i, end - i), 60), content};
 }
 
 // The word of `letter` whose number starts at code[j].
@@ -52,12 +62,21 @@ Word number_word(const std::string& code, char letter, size_t j, size_t& end) {
   }
   const std::string number = code.substr(number_start, j - number_start);
   if (!digits) throw LineError{std::string("address '") + letter + "' needs a number"};
+  // X1e5 would read as X1 and an address E: say what is wrong instead.
+  if (j + 1 < code.size() && (code[j] == 'e' || code[j] == 'E') &&
+      (std::isdigit(static_cast<unsigned char>(code[j + 1])) || code[j + 1] == '+' || code[j + 1] == '-'))
+    throw LineError{std::string("'") + letter + printable(number, 24) + code[j] +
+                    "..': words take decimal numbers, no exponent"};
   char* parse_end = nullptr;
   const double value = std::strtod(number.c_str(), &parse_end);
-  if (parse_end != number.c_str() + number.size() || !std::isfinite(value))
-    throw LineError{std::string("malformed number '") + number + "' after '" + letter + "'"};
+  if (parse_end != number.c_str() + number.size())
+    throw LineError{std::string("malformed number '") + printable(number, 24) + "' after '" + letter + "'"};
+  if (!std::isfinite(value))
+    throw LineError{std::string("number '") + printable(number, 24) + "' after '" + letter + "' is out of range"};
   end = j;
-  return Word{letter, value, std::string(1, letter) + number, std::string()};
+  // Digits, '.' and a sign: only a long number needs printable (this runs for every word).
+  return Word{letter, value, std::string(1, letter) + (number.size() <= 24 ? number : printable(number, 24)),
+              std::string()};
 }
 
 // The word starting at code[i], an address letter; `i` moves past it.
@@ -78,6 +97,30 @@ Word read_word(const std::string& code, size_t& i) {
 }
 
 }  // namespace
+
+void check_characters(const std::string& line) {
+  const auto bad = std::find_if(line.begin(), line.end(), [](char c) { return is_control(c) && c != '\t' && c != '\r'; });
+  if (bad == line.end()) return;
+  throw LineError{"control character " + hex_code(*bad) + " in column " + std::to_string(bad - line.begin() + 1) +
+                  ": an NC program is text"};
+}
+
+std::string printable(std::string_view text, size_t max_bytes) {
+  // Every word's text comes here: most need no change.
+  if (text.size() <= max_bytes && std::none_of(text.begin(), text.end(), [](char c) { return is_control(c); }))
+    return std::string(text);
+  size_t cut = std::min(text.size(), max_bytes);
+  // Whole UTF-8 characters: not cut before a continuation byte.
+  while (cut < text.size() && cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  std::string out;
+  out.reserve(cut + 3);
+  for (const char c : text.substr(0, cut)) {
+    if (is_control(c) && c != '\t') out += "\\x" + hex_code(c).substr(2);
+    else out += c;
+  }
+  if (cut < text.size()) out += "...";
+  return out;
+}
 
 std::string command_keyword(const std::string& command) { return command.substr(0, command.find_first_of(" =")); }
 
@@ -121,10 +164,11 @@ std::vector<Word> split_words(const std::string& code) {
   return words;
 }
 
-int integer_code(const Word& w) {
-  if (w.value != std::floor(w.value) || w.value < 0)
-    throw LineError{"'" + w.text + "' needs a whole non-negative number"};
-  return static_cast<int>(w.value);
+int64_t integer_code(const Word& w, int64_t max) {
+  // Compared as doubles: the cast of a number beyond int64_t is undefined.
+  if (w.value != std::floor(w.value) || w.value < 0 || w.value > static_cast<double>(max))
+    throw LineError{"'" + w.text + "' needs a whole number 0.." + std::to_string(max)};
+  return static_cast<int64_t>(w.value);
 }
 
 std::string upper_words(const std::string& text) {

@@ -2,7 +2,9 @@
 // The lexical level of one NC line (KRN-1): comments, words (an address
 // letter and its number), and the error of a line.
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hil::cnc::decoding {
@@ -19,7 +21,7 @@ struct LineError {
 struct Word {
   char letter;
   double value;
-  std::string text;     // as written, for messages
+  std::string text;     // as written, for messages (a long number shortened)
   std::string command;  // empty for a number
   bool is_axis_command() const { return !command.empty(); }
 };
@@ -27,13 +29,21 @@ struct Word {
 // The keyword of an axis command: LIFT_START of LIFT_START POS=40.
 std::string command_keyword(const std::string& command);
 
+// An NC line is text: a control character other than tab and CR (a NUL
+// byte, binary data) is a LineError naming it and its column.
+void check_characters(const std::string& line);
+
+// `text` to quote in a message: control characters as \xNN, at most
+// `max_bytes` (then "...").
+std::string printable(std::string_view text, size_t max_bytes = 200);
+
 // `line` without its `;` and `( )` comments.
 std::string strip_comments(const std::string& line);
 
 std::vector<Word> split_words(const std::string& code);
 
-// The number of an N, G or M word.
-int integer_code(const Word& w);
+// The number of an N, G or M word: whole, 0..max (value_ranges.hpp).
+int64_t integer_code(const Word& w, int64_t max);
 
 // Upper case, blanks between words reduced to one: how '#' commands and
 // axis commands are matched against their keywords.
