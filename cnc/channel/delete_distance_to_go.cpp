@@ -44,6 +44,13 @@ void DeleteDistanceToGo::write(HliState& hli) const {
 DeleteDistanceToGo::Outcome DeleteDistanceToGo::start_short_cut(PathInterpolator& path, double t,
                                                                ChannelEvents& events) {
   requested_ = false;
+  if (path.empty()) {  // DDTG-6: standing with nothing ahead (after 50810, at the start of the stored contour)
+    Event none = events.at_block(Severity::warning, "delete distance to go: no motion block left to short-cut to; "
+                                                    "the path stays where it stands");
+    none.id = 50810;
+    events.raise(none);
+    return Outcome::no_target;
+  }
   const bool rapid = active_ ? rapid_ : path.front_block().motion.type == MotionType::rapid;
   active_ = false;
   const StopPoint stop = path.leave_front(t);
@@ -112,6 +119,7 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::backward_short_cut(PathInterpola
     none.id = 50810;
     events.raise(none);
     cursors.next_backward = cursors.lowest_stored;
+    cursors.last_finished = stop.block;  // it stands inside this block: forward again goes on from here
     return Outcome::no_target;
   }
   cursors.next_backward = target;

@@ -66,12 +66,19 @@ void PathInterpolator::go_on_from_standstill(double t) {
 
 bool PathInterpolator::turn(double t, size_t stored_blocks) {
   if (look_ahead_.empty()) {
-    // Standing where the stored contour begins: forward from that block's
-    // start. (Forward with nothing left to move, the program is about to
-    // end: it cannot turn there.)
+    // Standing where the stored contour begins. (Forward with nothing left
+    // to move, the program is about to end: it cannot turn there.)
     if (direction_ == TravelDirection::forward) return false;
     direction_ = TravelDirection::forward;
-    cursors_.next_to_look_ahead = cursors_.last_finished;
+    // It stands in block k (at its start, or where a backward short cut
+    // found nothing before it, DDTG-6): on along k from there.
+    const size_t k = cursors_.last_finished;
+    if (blocks_[k].has_motion) {
+      PathSegment rest(motion_from(blocks_[k].motion, setpoint_positions()), machine_);
+      if (rest.length() > shortest_rest_mm) look_ahead_.push(k, std::move(rest), blocks_[k].slope);
+    }
+    cursors_.next_to_look_ahead = k + 1;
+    refill();
     return true;
   }
   const StopPoint stop = leave_front(t);

@@ -54,14 +54,6 @@ class FuzzPlc {
   }
 
   const PlcCounts& counts() const { return counts_; }
-  // No more delete distance to go edges from now on.
-  void stop_ddtg() { ddtg_stopped_ = true; }
-  // No edges while backward motion is requested or active, nor from the
-  // line `last_motion_line` on.
-  void avoid_known_bug(int64_t last_motion_line) {
-    avoid_backward_ddtg_ = true;
-    last_motion_line_ = last_motion_line;
-  }
   // No backward motion toggle within 1 um of where the path entered its
   // block (start, or end going backward): a turn there drops a rest under
   // 10 nm (backward_motion.cpp, shortest_rest_mm) and the setpoint jumps.
@@ -104,14 +96,10 @@ class FuzzPlc {
     }
     if (chaos && use_ddtg_) {
       ControlUnitBool& ddtg = c.delete_distance_to_go;
-      const bool avoided = ddtg_stopped_ || (avoid_backward_ddtg_ && (c.backward_motion.command_w ||
-                                                                       s.backward_motion.request_r ||
-                                                                       s.backward_motion.state_r ||
-                                                                       s.block_count_r >= last_motion_line_));
-      if (!ddtg.command_w && k >= next_ddtg_ && !avoided) {
+      if (!ddtg.command_w && k >= next_ddtg_) {
         ddtg = {true, rng_.chance(0.9)};
         const uint32_t mask = rng_.chance(0.4) ? 0u : static_cast<uint32_t>(rng_.integer(1, 15));
-        c.delete_distance_to_go_activation = {static_cast<int32_t>(mask), rng_.chance(0.85)};
+        c.delete_distance_to_go_activation = {mask, rng_.chance(0.85)};
         // Held: a few cycles (withdrawn before the short cut, DDTG-3), until
         // the short cut runs, or long.
         const size_t hold = rng_.pick({0.25, 0.4, 0.35});
@@ -178,8 +166,6 @@ class FuzzPlc {
   int64_t ddtg_release_ = 0;
   bool release_on_active_ = false;
   int64_t ack_at_ = -1;
-  bool ddtg_stopped_ = false, avoid_backward_ddtg_ = false;
-  int64_t last_motion_line_ = 0;
   std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> block_ends_;
   PlcCounts counts_;
 };
@@ -309,7 +295,6 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   logger::LimitChecker checker(machine);
   FuzzPlc plc(mix_seed(seed ^ 0x91c), run.chaos_cycles);
   if (options.avoid_known_channel_bugs) {
-    plc.avoid_known_bug(run.last_motion_line);
     std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> ends;
     for (const cnc::Block& b : cnc::decode_program(program.text, machine, std::vector<double>(machine.axes.size(), 0.0)).blocks)
       if (b.has_motion) ends[b.block_count] = {b.motion.start, b.motion.end};
@@ -340,7 +325,6 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       ++run.events;
       if (e.id == 50810) {
         motion_ended_early = true;
-        if (options.avoid_known_channel_bugs) plc.stop_ddtg();
       }
       const bool from_plc = e.nc_line == 0 && (e.message.rfind("override ", 0) == 0 ||
                                                e.message.rfind("program start ignored", 0) == 0);

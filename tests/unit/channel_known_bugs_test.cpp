@@ -1,8 +1,7 @@
 // Failures the channel fuzz (tests/fuzz, bench/channel_fuzz) found in
-// cnc/channel/ that are not fixed yet (cnc/channel/ is being rewritten):
-// each test states the behaviour the requirement asks for and fails today.
-// Hidden ([.]): not run by ctest; run them with
-//   build/tests/unit_tests "[known-bug]"
+// cnc/channel/: each test states the behaviour the requirement asks for.
+// The fixed ones run in ctest; those still hidden ([.][known-bug]) fail
+// today; run them with build/bin/unit_tests "[known-bug]"
 // Each scenario runs in a child process: today some of them crash.
 #include <catch2/catch.hpp>
 
@@ -73,8 +72,8 @@ struct Watch {
 
 }  // namespace
 
-TEST_CASE("DDTG-6 KRN-5 known bug: delete distance to go while the program waits for an M function after 50810",
-          "[.][known-bug]") {
+TEST_CASE("DDTG-6 KRN-5 delete distance to go while the program waits for an M function after 50810: 50810 again, nothing moves",
+          "[channel][ddtg]") {
   // Channel fuzz seed 100624: the short cut found no target (DDTG-6, 50810),
   // motion ended, M20 of a later line waits for its acknowledgement with an
   // empty look-ahead; a new rising edge then runs Channel::leave_front() on
@@ -92,8 +91,8 @@ TEST_CASE("DDTG-6 KRN-5 known bug: delete distance to go while the program waits
   CHECK(outcome == "");
 }
 
-TEST_CASE("KRN-5 DDTG-10 known bug: delete distance to go standing at the start of the stored contour",
-          "[.][known-bug]") {
+TEST_CASE("KRN-5 DDTG-10 delete distance to go standing at the start of the stored contour: 50810, nothing moves",
+          "[channel][ddtg]") {
   // Seeds 179, 400, 641, 873, 101438: backward motion reached the program
   // start and stands there (look-ahead empty); a delete distance to go edge
   // runs start_backward_short_cut() -> leave_front() on the empty look-ahead.
@@ -110,8 +109,8 @@ TEST_CASE("KRN-5 DDTG-10 known bug: delete distance to go standing at the start 
   CHECK(outcome == "");
 }
 
-TEST_CASE("KRN-5 DDTG-10 known bug: after 50810 in backward motion the turn forward restarts the block at its start",
-          "[.][known-bug]") {
+TEST_CASE("KRN-5 DDTG-10 after 50810 in backward motion the turn forward goes on from where the path stands",
+          "[channel][ddtg]") {
   // Seeds 1, 209, 140, 59, ...: delete distance to go in backward motion in
   // the first motion block finds no block before it (50810) and empties the
   // look-ahead where the path stands, in the middle of the block; when the
