@@ -28,6 +28,9 @@ expect_output "within 5000 ms; the run goes on without it"
 expect_output "channel stopped: drive error on axis Y (axis_sim Y lost: no answer to cycle 10"
 expect_output "axis_sim Y 137 ("
 tail -n 1 "$WORK/axis/cnc.out" | grep -q "channel ERROR" || fail "the channel did not end in ERROR"
+# RIG-7: the rerun loses axis Y at the same cycle and stops the same way.
+expect_status 0 "$hil" rerun "$WORK/axis/run.lcmlog"
+expect_output "identical: "
 
 "$HIL_BIN/hil_inject" --url "$url" --at-cycle 1000 --kill-pid-file "$WORK/logger.pid" >"$WORK/inject.out" 2>&1 &
 injector=$!
