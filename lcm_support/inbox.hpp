@@ -53,11 +53,15 @@ class Inbox {
       Message m;
       if (!decode(rbuf.data, rbuf.data_size, m)) return ledger_.refuse(ch, traffic::Refusal::undecodable);
       if (m.run_id != run_id_) return ledger_.refuse(ch, traffic::Refusal::foreign_run);
-      if (!take(m, rbuf)) ledger_.refuse(ch, traffic::Refusal::wrong_cycle);
+      if (take(m, rbuf)) ++taken_;
+      else ledger_.refuse(ch, traffic::Refusal::wrong_cycle);
     });
   }
 
   int64_t run_id() const { return run_id_; }
+  // Messages taken so far: what tells a node its run is still alive (another
+  // rig's traffic on the port must not).
+  int64_t taken() const { return taken_; }
   const traffic::Ledger& ledger() const { return ledger_; }
 
  private:
@@ -71,6 +75,7 @@ class Inbox {
   lcm::LCM& lcm_;
   int64_t run_id_;
   traffic::Ledger ledger_;
+  int64_t taken_ = 0;
   std::vector<std::unique_ptr<Route>> routes_;
   std::vector<lcm::Subscription*> subscriptions_;
 };

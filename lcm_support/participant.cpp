@@ -68,10 +68,17 @@ bool Participant::wait_for_start(std::chrono::milliseconds timeout) {
 }
 
 bool Participant::serve_until_end(std::chrono::milliseconds silence) {
+  using clock = std::chrono::steady_clock;
+  auto last = clock::now();
+  int64_t taken = inbox_.taken();
   while (!ended_) {
-    const int handled = lcm_.handleTimeout(static_cast<int>(silence.count()));
-    if (handled == 0) return false;
-    if (handled < 0) throw std::runtime_error("LCM receive failed");
+    if (lcm_.handleTimeout(100) < 0) throw std::runtime_error("LCM receive failed");
+    if (inbox_.taken() != taken) {
+      taken = inbox_.taken();
+      last = clock::now();
+    } else if (clock::now() - last > silence) {
+      return false;
+    }
   }
   return true;
 }

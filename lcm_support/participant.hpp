@@ -20,7 +20,7 @@ class Participant {
   // Announces READY until the CNC's manifest arrives; false after `timeout`.
   bool wait_for_start(std::chrono::milliseconds timeout);
   // Handles messages until the CNC's RUN_END; false if `silence` passes
-  // without any message.
+  // without a message of this run.
   bool serve_until_end(std::chrono::milliseconds silence);
   // Announces this node's own end with what its inbox refused (and, from
   // plc_sim, how many verdicts it published); the logger waits for it.

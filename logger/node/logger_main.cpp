@@ -90,6 +90,8 @@ class LoggerNode {
   const std::set<std::string>& lost() const { return lost_; }
   bool scenario_mismatch() const { return scenario_mismatch_; }
   int64_t recorded() const { return recorded_; }
+  // Messages of the run from others than this logger: the run is alive.
+  int64_t heard() const { return heard_; }
   int64_t dropped() const { return socket_drops_; }  // by the kernel, known after seal()
   const traffic::Ledger& refused() const { return refused_; }
 
@@ -149,12 +151,17 @@ class LoggerNode {
     write_raw(channel, data, size, recv_utime);
     if (channel == channels::participant) {
       hil::participant_t m;
-      if (!lcm_support::decode(data, size, m) || m.phase != hil::participant_t::PHASE_RUN_END) return;
+      if (!lcm_support::decode(data, size, m)) return;
+      if (m.name != "logger") ++heard_;
+      if (m.phase != hil::participant_t::PHASE_RUN_END) return;
       ended_.insert(m.name);
       if (m.name != "cnc") return;
       end_cycle_ = m.cycle;
       for (const auto& name : m.lost) lost_.insert(name);
-    } else if (channel == channels::manifest) {
+      return;
+    }
+    ++heard_;
+    if (channel == channels::manifest) {
       hil::run_manifest_t m;
       if (!lcm_support::decode(data, size, m)) return;
       if (participants_.empty())
@@ -208,7 +215,7 @@ class LoggerNode {
   std::optional<std::pair<std::string, std::string>> scenario_;
   std::set<std::string> participants_, ended_, lost_;
   int64_t end_cycle_ = -1;
-  int64_t recorded_ = 0;
+  int64_t recorded_ = 0, heard_ = 0;
   int64_t socket_drops_ = -1;
   bool scenario_mismatch_ = false;
   traffic::Ledger refused_;
@@ -257,6 +264,7 @@ int main(int argc, char** argv) {
       }
     }
     auto last_message = clock_type::now(), next_alive = clock_type::now();
+    int64_t heard = node.heard();  // neither another rig's traffic nor its own heartbeat is a sign of the run
     clock_type::time_point cnc_end{};
     while (!node.all_accounted_for()) {
       const auto now = clock_type::now();
@@ -264,13 +272,15 @@ int main(int argc, char** argv) {
         participant->announce_alive();
         next_alive = now + std::chrono::milliseconds(100);
       }
-      const int handled = lcm.handleTimeout(50);
-      if (handled < 0) throw std::runtime_error("LCM receive failed");
-      if (handled > 0) last_message = now;
+      if (lcm.handleTimeout(50) < 0) throw std::runtime_error("LCM receive failed");
+      if (node.heard() != heard) {
+        heard = node.heard();
+        last_message = now;
+      }
       if (node.cnc_ended() && cnc_end == clock_type::time_point{}) cnc_end = now;
       if (node.cnc_ended() && now - cnc_end > std::chrono::duration<double>(linger_s)) break;
       if (!node.cnc_ended() && now - last_message > std::chrono::seconds(10)) {
-        spdlog::error("no message for 10 s and no RUN_END from the CNC: log closed early");
+        spdlog::error("no message of the run for 10 s and no RUN_END from the CNC: log closed early");
         node.seal();
         return 2;
       }
