@@ -86,4 +86,18 @@ std::string describe_refused(const LogFacts& facts) {
   return out.empty() ? "none" : "\n  " + out;
 }
 
+void Attendance::ended(const std::string& name, int64_t cycle, const std::vector<std::string>& lost) {
+  ended_.insert(name);
+  if (name != "cnc") return;
+  end_cycle_ = cycle;
+  lost_.insert(lost.begin(), lost.end());
+}
+
+std::vector<std::string> Attendance::missing() const {
+  std::vector<std::string> out;
+  for (const auto& name : expected_)
+    if (!ended_.count(name) && !lost_.count(name)) out.push_back(name);
+  return out;
+}
+
 }  // namespace hil::logger

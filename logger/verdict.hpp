@@ -61,4 +61,30 @@ RunVerdict judge_run(const std::vector<ProcessExit>& exits, const LogFacts& fact
 // What every node refused, for the report: "cnc: AXIS_Y_STATE: 1 wrong cycle", or "none".
 std::string describe_refused(const LogFacts& facts);
 
+// Who of a run has ended, as the logger sees it: it closes the log when
+// every participant it was told of (by hil run, or the manifest; never
+// just those whose READY it happened to hear) has announced RUN_END or the
+// cnc lost it.
+class Attendance {
+ public:
+  // A participant whose RUN_END closes the log (the logger itself is none).
+  void expect(const std::string& name) {
+    if (name != "logger") expected_.insert(name);
+  }
+  // A RUN_END; the cnc's names the cycle and whom it lost.
+  void ended(const std::string& name, int64_t cycle, const std::vector<std::string>& lost);
+
+  bool cnc_ended() const { return end_cycle_ >= 0; }
+  int64_t end_cycle() const { return end_cycle_; }  // -1 before the cnc's RUN_END
+  // Every participant ended or was lost, the cnc's end included.
+  bool complete() const { return cnc_ended() && missing().empty(); }
+  // Participants neither ended nor lost.
+  std::vector<std::string> missing() const;
+  const std::set<std::string>& lost() const { return lost_; }
+
+ private:
+  std::set<std::string> expected_{"cnc"}, ended_, lost_;
+  int64_t end_cycle_ = -1;
+};
+
 }  // namespace hil::logger

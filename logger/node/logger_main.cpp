@@ -20,9 +20,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 #include <optional>
 #include <set>
+#include <sstream>
 
 #include "channels.hpp"
 #include "inbox.hpp"
@@ -30,6 +30,7 @@
 #include "participant.hpp"
 #include "run_identity.hpp"
 #include "scenario.hpp"
+#include "verdict.hpp"
 
 namespace {
 
@@ -67,8 +68,8 @@ class LoggerNode {
              std::optional<std::pair<std::string, std::string>> scenario)
       : log_(path, "w"), run_id_(run_id), scenario_(std::move(scenario)) {
     if (!log_.good()) throw std::runtime_error("cannot write log " + path);
-    for (std::string& name : participants)
-      if (name != "logger") participants_.insert(std::move(name));
+    for (const std::string& name : participants) attendance_.expect(name);
+    told_participants_ = !participants.empty();
     lcm.subscribeFunction(
            ".*",
            +[](const lcm::ReceiveBuffer* rbuf, const std::string& channel, LoggerNode* self) {
@@ -78,16 +79,7 @@ class LoggerNode {
         ->setQueueCapacity(1000000);
   }
 
-  bool cnc_ended() const { return end_cycle_ >= 0; }
-  // Every participant has ended, or the CNC lost it.
-  bool all_accounted_for() const { return cnc_ended() && missing().empty(); }
-  std::vector<std::string> missing() const {
-    std::vector<std::string> out;
-    for (const auto& name : participants_)
-      if (!ended_.count(name) && !lost_.count(name)) out.push_back(name);
-    return out;
-  }
-  const std::set<std::string>& lost() const { return lost_; }
+  const logger::Attendance& attendance() const { return attendance_; }
   bool scenario_mismatch() const { return scenario_mismatch_; }
   int64_t recorded() const { return recorded_; }
   // Messages of the run from others than this logger: the run is alive.
@@ -100,10 +92,10 @@ class LoggerNode {
     hil::log_summary_t m;
     m.run_id = run_id_;
     m.utime = 0;
-    m.cycle = end_cycle_;
+    m.cycle = attendance_.end_cycle();
     m.recorded = recorded_;
-    m.missing = missing();
-    for (const auto& name : lost_) m.missing.push_back(name);
+    m.missing = attendance_.missing();
+    for (const auto& name : attendance_.lost()) m.missing.push_back(name);
     m.n_missing = static_cast<int16_t>(m.missing.size());
     m.rejected = lcm_support::to_message(refused_);
     m.n_rejected = static_cast<int16_t>(m.rejected.size());
@@ -153,21 +145,15 @@ class LoggerNode {
       hil::participant_t m;
       if (!lcm_support::decode(data, size, m)) return;
       if (m.name != "logger") ++heard_;
-      if (m.phase != hil::participant_t::PHASE_RUN_END) return;
-      ended_.insert(m.name);
-      if (m.name != "cnc") return;
-      end_cycle_ = m.cycle;
-      for (const auto& name : m.lost) lost_.insert(name);
+      if (m.phase == hil::participant_t::PHASE_RUN_END) attendance_.ended(m.name, m.cycle, m.lost);
       return;
     }
     ++heard_;
     if (channel == channels::manifest) {
       hil::run_manifest_t m;
       if (!lcm_support::decode(data, size, m)) return;
-      if (participants_.empty())
-        for (const auto& name : m.participants)
-          if (name != "logger") participants_.insert(name);
-      participants_.insert("cnc");
+      if (!told_participants_)
+        for (const auto& name : m.participants) attendance_.expect(name);
       write_scenario(m, recv_utime);
     }
   }
@@ -213,8 +199,8 @@ class LoggerNode {
   lcm::LogFile log_;
   int64_t run_id_;
   std::optional<std::pair<std::string, std::string>> scenario_;
-  std::set<std::string> participants_, ended_, lost_;
-  int64_t end_cycle_ = -1;
+  logger::Attendance attendance_;
+  bool told_participants_ = false;  // by hil run; else the manifest's
   int64_t recorded_ = 0, heard_ = 0;
   int64_t socket_drops_ = -1;
   bool scenario_mismatch_ = false;
@@ -266,7 +252,8 @@ int main(int argc, char** argv) {
     auto last_message = clock_type::now(), next_alive = clock_type::now();
     int64_t heard = node.heard();  // neither another rig's traffic nor its own heartbeat is a sign of the run
     clock_type::time_point cnc_end{};
-    while (!node.all_accounted_for()) {
+    const logger::Attendance& attendance = node.attendance();
+    while (!attendance.complete()) {
       const auto now = clock_type::now();
       if (participant && now >= next_alive) {
         participant->announce_alive();
@@ -277,9 +264,9 @@ int main(int argc, char** argv) {
         heard = node.heard();
         last_message = now;
       }
-      if (node.cnc_ended() && cnc_end == clock_type::time_point{}) cnc_end = now;
-      if (node.cnc_ended() && now - cnc_end > std::chrono::duration<double>(linger_s)) break;
-      if (!node.cnc_ended() && now - last_message > std::chrono::seconds(10)) {
+      if (attendance.cnc_ended() && cnc_end == clock_type::time_point{}) cnc_end = now;
+      if (attendance.cnc_ended() && now - cnc_end > std::chrono::duration<double>(linger_s)) break;
+      if (!attendance.cnc_ended() && now - last_message > std::chrono::seconds(10)) {
         spdlog::error("no message of the run for 10 s and no RUN_END from the CNC: log closed early");
         node.seal();
         return 2;
@@ -289,10 +276,10 @@ int main(int argc, char** argv) {
     spdlog::info("{} messages recorded to {}; the kernel dropped {} datagram(s) at its socket", node.recorded(), path,
                  node.dropped());
     if (!node.refused().empty()) spdlog::warn("not recorded: {}", node.refused().describe());
-    const std::vector<std::string> missing = node.missing();
+    const std::vector<std::string> missing = attendance.missing();
     if (!missing.empty()) spdlog::error("no RUN_END within {} s of the CNC's from: {}", linger_s, names(missing));
-    if (!node.lost().empty())
-      spdlog::error("lost during the run (the CNC says): {}", names({node.lost().begin(), node.lost().end()}));
-    return missing.empty() && node.lost().empty() && !node.scenario_mismatch() ? 0 : 3;
+    if (!attendance.lost().empty())
+      spdlog::error("lost during the run (the CNC says): {}", names({attendance.lost().begin(), attendance.lost().end()}));
+    return missing.empty() && attendance.lost().empty() && !node.scenario_mismatch() ? 0 : 3;
   });
 }

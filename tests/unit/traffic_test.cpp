@@ -186,3 +186,23 @@ TEST_CASE("RIG-9 run identity: ids differ, the digest tells scenarios apart, a l
       "name: s\nmachine:\n  axes:\n    - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002}\nnc_file: program.nc\n";
   CHECK(scenario_from_text(yaml, "N10 G01 X1 F100\n").nc_program == "N10 G01 X1 F100\n");
 }
+
+TEST_CASE("RIG-9 attendance: the logger waits for every participant it was told of, READY heard or not",
+          "[traffic][verdict]") {
+  logger::Attendance attendance;
+  for (const char* name : {"cnc", "plc_sim", "axis_sim X", "logger"}) attendance.expect(name);
+  attendance.ended("axis_sim X", 208, {});
+  attendance.ended("cnc", 208, {});
+  CHECK(attendance.cnc_ended());
+  CHECK_FALSE(attendance.complete());  // plc_sim's verdicts come after the cnc's RUN_END
+  CHECK(attendance.missing() == std::vector<std::string>{"plc_sim"});
+  attendance.ended("plc_sim", 208, {});
+  CHECK(attendance.complete());
+
+  logger::Attendance lost;  // the cnc lost axis_sim X: nobody waits for its end
+  lost.expect("axis_sim X");
+  lost.ended("cnc", 1243, {"axis_sim X"});
+  CHECK(lost.complete());
+  CHECK(lost.lost() == std::set<std::string>{"axis_sim X"});
+  CHECK(lost.end_cycle() == 1243);
+}
