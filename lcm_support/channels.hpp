@@ -9,6 +9,11 @@ inline const std::string hli_state = "HLI_STATE";
 inline const std::string event = "HIL_EVENT";
 inline const std::string manifest = "HIL_MANIFEST";
 inline const std::string participant = "HIL_PARTICIPANT";
+// Written into the log by hil_logger, never sent in a live run.
+inline const std::string scenario = "HIL_SCENARIO";
+inline const std::string log_end = "HIL_LOG_END";
+// LCM's own: every udpm instance sends one when it opens. Not the rig's; ignored.
+inline const std::string lcm_self_test = "LCM_SELF_TEST";
 
 inline std::string axis_command(const std::string& axis) { return "AXIS_" + axis + "_CMD"; }
 inline std::string axis_state(const std::string& axis) { return "AXIS_" + axis + "_STATE"; }

@@ -12,6 +12,9 @@ void add_node_options(CLI::App& app, NodeOptions& options) {
       ->check(CLI::ExistingFile);
   app.add_option("--url", options.url, "LCM URL of the rig, e.g. udpm://239.255.76.67:7667?ttl=0")
       ->required();
+  app.add_option("--run-id", options.run_id, "the run's id: every message carries it, others are refused")
+      ->required()
+      ->check(CLI::PositiveNumber);
 }
 
 int guarded_main(const std::string& node_name, const std::function<int()>& body) {

@@ -11,6 +11,7 @@ namespace hil::lcm_support {
 struct NodeOptions {
   std::string scenario_file;  // resolved scenario (machine and NC program inline)
   std::string url;            // LCM URL of the rig
+  int64_t run_id = 0;         // the run's id (hil run chooses it): messages of other runs are refused
 };
 
 void add_node_options(CLI::App& app, NodeOptions& options);

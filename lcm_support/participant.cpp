@@ -12,37 +12,42 @@ void require_good(const lcm::LCM& lcm, const std::string& url) {
   if (!lcm.good()) throw std::runtime_error("cannot open LCM on " + url);
 }
 
-Participant::Participant(lcm::LCM& lcm, std::string name) : lcm_(lcm), name_(std::move(name)) {
-  manifest_sub_ = lcm_.subscribeFunction(
-      channels::manifest,
-      +[](const lcm::ReceiveBuffer*, const std::string&, Participant* self) { self->started_ = true; },
-      this);
-  participant_sub_ = lcm_.subscribeFunction(
-      channels::participant,
-      +[](const lcm::ReceiveBuffer*, const std::string&, const hil::participant_t* m, Participant* self) {
-        if (m->name == "cnc" && m->phase == hil::participant_t::PHASE_RUN_END) {
-          self->ended_ = true;
-          self->end_cycle_ = m->cycle;
-        }
-      },
-      this);
+Participant::Participant(lcm::LCM& lcm, Inbox& inbox, std::string name)
+    : lcm_(lcm), inbox_(inbox), name_(std::move(name)) {
+  inbox_.on<hil::run_manifest_t>(channels::manifest, [this](const hil::run_manifest_t& m, const lcm::ReceiveBuffer&) {
+    if (started_) return false;  // the CNC sends one
+    manifest_ = m;
+    started_ = true;
+    return true;
+  });
+  inbox_.on<hil::participant_t>(channels::participant, [this](const hil::participant_t& m, const lcm::ReceiveBuffer&) {
+    if (m.name == "cnc" && m.phase == hil::participant_t::PHASE_RUN_END) {
+      ended_ = true;
+      end_cycle_ = m.cycle;
+    }
+    return true;
+  });
 }
 
-Participant::~Participant() {
-  lcm_.unsubscribe(manifest_sub_);
-  lcm_.unsubscribe(participant_sub_);
-}
-
-void Participant::announce(int8_t phase, int64_t cycle) {
+void Participant::announce(int8_t phase, int64_t cycle, int32_t verdicts) {
   hil::participant_t m;
+  m.run_id = inbox_.run_id();
   m.utime = 0;
   m.cycle = cycle;
   m.name = name_;
   m.phase = phase;
+  m.verdicts = verdicts;
+  if (phase == hil::participant_t::PHASE_RUN_END) m.rejected = to_message(inbox_.ledger());
+  m.n_rejected = static_cast<int16_t>(m.rejected.size());
+  m.n_lost = 0;
   lcm_.publish(channels::participant, &m);
 }
 
-void Participant::announce_end(int64_t cycle) { announce(hil::participant_t::PHASE_RUN_END, cycle); }
+void Participant::announce_end(int64_t cycle, int32_t verdicts) {
+  announce(hil::participant_t::PHASE_RUN_END, cycle, verdicts);
+}
+
+void Participant::announce_alive() { announce(hil::participant_t::PHASE_ALIVE, 0, 0); }
 
 bool Participant::wait_for_start(std::chrono::milliseconds timeout) {
   using clock = std::chrono::steady_clock;
@@ -54,7 +59,7 @@ bool Participant::wait_for_start(std::chrono::milliseconds timeout) {
     // On a timer, not per message received: answering every READY with a
     // READY would flood the bus.
     if (now >= next_announce) {
-      announce(hil::participant_t::PHASE_READY, 0);
+      announce(hil::participant_t::PHASE_READY, 0, 0);
       next_announce = now + std::chrono::milliseconds(50);
     }
     if (lcm_.handleTimeout(10) < 0) throw std::runtime_error("LCM receive failed");
@@ -63,10 +68,17 @@ bool Participant::wait_for_start(std::chrono::milliseconds timeout) {
 }
 
 bool Participant::serve_until_end(std::chrono::milliseconds silence) {
+  using clock = std::chrono::steady_clock;
+  auto last = clock::now();
+  int64_t taken = inbox_.taken();
   while (!ended_) {
-    const int handled = lcm_.handleTimeout(static_cast<int>(silence.count()));
-    if (handled == 0) return false;
-    if (handled < 0) throw std::runtime_error("LCM receive failed");
+    if (lcm_.handleTimeout(100) < 0) throw std::runtime_error("LCM receive failed");
+    if (inbox_.taken() != taken) {
+      taken = inbox_.taken();
+      last = clock::now();
+    } else if (clock::now() - last > silence) {
+      return false;
+    }
   }
   return true;
 }

@@ -1,41 +1,48 @@
 #pragma once
 // The lock-step handshake every node but the CNC takes part in (RIG-6):
-// announce READY until the CNC's manifest shows the run has begun; leave
-// when the CNC announces the run's end.
+// announce READY until this run's manifest shows it has begun; leave when
+// this run's CNC announces its end. Announcements and manifests of other
+// runs are refused (counted in the inbox's ledger).
+#include <hil/run_manifest_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <chrono>
 #include <string>
 
+#include "inbox.hpp"
+
 namespace hil::lcm_support {
 
 class Participant {
  public:
-  Participant(lcm::LCM& lcm, std::string name);
-  ~Participant();
+  Participant(lcm::LCM& lcm, Inbox& inbox, std::string name);
 
   // Announces READY until the CNC's manifest arrives; false after `timeout`.
   bool wait_for_start(std::chrono::milliseconds timeout);
   // Handles messages until the CNC's RUN_END; false if `silence` passes
-  // without any message.
+  // without a message of this run.
   bool serve_until_end(std::chrono::milliseconds silence);
-  // Announces this node's own end (the logger waits for it).
-  void announce_end(int64_t cycle);
+  // Announces this node's own end with what its inbox refused (and, from
+  // plc_sim, how many verdicts it published); the logger waits for it.
+  void announce_end(int64_t cycle, int32_t verdicts = 0);
+  // The logger's heartbeat: the CNC stops the run if it falls silent.
+  void announce_alive();
 
   bool started() const { return started_; }
   bool ended() const { return ended_; }
   int64_t end_cycle() const { return end_cycle_; }
+  const hil::run_manifest_t& manifest() const { return manifest_; }
 
  private:
-  void announce(int8_t phase, int64_t cycle);
+  void announce(int8_t phase, int64_t cycle, int32_t verdicts);
 
   lcm::LCM& lcm_;
+  Inbox& inbox_;
   std::string name_;
   bool started_ = false;
   bool ended_ = false;
   int64_t end_cycle_ = 0;
-  lcm::Subscription* manifest_sub_ = nullptr;
-  lcm::Subscription* participant_sub_ = nullptr;
+  hil::run_manifest_t manifest_;
 };
 
 // An LCM instance on `url`, or an exception naming it.

@@ -3,9 +3,12 @@
 #include <hil/axis_setpoint_t.hpp>
 #include <hil/axis_state_t.hpp>
 #include <hil/event_t.hpp>
+#include <hil/hli_control_t.hpp>
 #include <hil/hli_state_t.hpp>
+#include <hil/log_summary_t.hpp>
 #include <hil/participant_t.hpp>
 #include <hil/run_manifest_t.hpp>
+#include <hil/scenario_text_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <algorithm>
@@ -15,10 +18,15 @@
 
 #include "channels.hpp"
 #include "config_error.hpp"
+#include "inbox.hpp"
 #include "messages.hpp"
+#include "run_identity.hpp"
 
 namespace hil::logger {
 namespace {
+
+// Where the run id ends in an encoded rig message: after the fingerprint.
+constexpr size_t run_id_end = 16;
 
 template <typename T>
 bool decode(const lcm::LogEvent& e, T& msg) {
@@ -31,57 +39,119 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
   lcm::LogFile file(path, "r");
   if (!file.good()) throw std::runtime_error("cannot open LCM log " + path);
   RunLog log;
+  LogFacts& f = log.facts;
+  traffic::Ledger& in_log = f.refused["log"];
   std::unique_ptr<LimitChecker> checker;
+  std::optional<int64_t> run;  // the run of the first manifest
   while (const lcm::LogEvent* e = file.readNextEvent()) {
-    ++log.messages_per_channel[e->channel];
-    if (e->channel == channels::manifest) {
-      hil::run_manifest_t m;
-      if (!decode(*e, m)) { ++log.undecodable; continue; }
-      log.rig_version = m.rig_version;
-      try {
-        log.scenario = parse_scenario(YAML::Load(m.scenario_yaml));
-        checker = std::make_unique<LimitChecker>(log.scenario->machine);
-        log.axes.assign(log.scenario->machine.axes.size(), {});
-      } catch (const std::exception& ex) {
-        throw std::runtime_error(path + ": manifest does not hold a valid scenario: " + ex.what());
+    const std::string& ch = e->channel;
+    ++log.messages_per_channel[ch];
+    // Decodes; true if the message is this run's (counted if not).
+    auto of_run = [&](auto& m) {
+      if (!decode(*e, m)) {
+        in_log.refuse(ch, traffic::Refusal::undecodable);
+        return false;
       }
-    } else if (e->channel == channels::event) {
+      if (!run) return false;  // before the manifest: the READY handshake
+      if (m.run_id != *run) in_log.refuse(ch, traffic::Refusal::foreign_run);
+      return m.run_id == *run;
+    };
+    auto lock_step = [&](int64_t cycle) {
+      if (const auto c = f.lock_step.find(ch); c != f.lock_step.end()) c->second.push_back(cycle);
+    };
+    if (ch == channels::manifest) {
+      hil::run_manifest_t m;
+      if (run) {
+        of_run(m);  // a second manifest tells nothing new
+        continue;
+      }
+      if (!decode(*e, m)) {
+        in_log.refuse(ch, traffic::Refusal::undecodable);
+        continue;
+      }
+      run = m.run_id;
+      f.run_id = m.run_id;
+      f.manifest = true;
+      log.rig_version = m.rig_version;
+      for (const auto& name : m.participants)
+        if (name != "logger") f.participants.push_back(name);
+      f.participants.push_back("cnc");
+    } else if (ch == channels::scenario) {
+      hil::scenario_text_t m;
+      if (!of_run(m) || log.scenario) continue;
+      try {
+        log.scenario = scenario_from_text(m.yaml, m.nc_program);
+      } catch (const std::exception& ex) {
+        throw std::runtime_error(path + ": HIL_SCENARIO does not hold a valid scenario: " + ex.what());
+      }
+      f.scenario = true;
+      const MachineConfig& machine = log.scenario->machine;
+      checker = std::make_unique<LimitChecker>(machine);
+      log.axes.assign(machine.axes.size(), {});
+      for (const AxisConfig& axis : machine.axes) {
+        f.lock_step[channels::axis_command(axis.name)];
+        f.lock_step[channels::axis_state(axis.name)];
+      }
+      f.lock_step[channels::hli_state];
+      f.lock_step[channels::hli_control];
+      f.expectations = static_cast<int>(log.scenario->expectations.size() + log.scenario->expected_events.size());
+    } else if (ch == channels::log_end) {
+      hil::log_summary_t m;
+      if (!of_run(m)) continue;
+      f.sealed = true;
+      f.logger_missing = m.missing;
+      f.logger_socket_drops = m.socket_drops;
+      f.refused["logger"] = lcm_support::from_message(m.rejected);
+    } else if (ch == channels::event) {
       hil::event_t m;
-      if (!decode(*e, m)) { ++log.undecodable; continue; }
+      if (!of_run(m)) continue;
       LoggedEvent le;
       le.cycle = m.cycle;
       le.source = m.source;
       le.event = lcm_support::from_message(m);
+      f.verdict_pass += le.event.verdict == Verdict::pass ? 1 : 0;
+      f.verdict_fail += le.event.verdict == Verdict::fail ? 1 : 0;
       log.events.push_back(le);
-    } else if (e->channel == channels::hli_state) {
+    } else if (ch == channels::hli_state) {
       hil::hli_state_t m;
-      if (!decode(*e, m)) { ++log.undecodable; continue; }
+      if (!of_run(m)) continue;
+      lock_step(m.cycle);
       log.last_cycle = std::max(log.last_cycle, m.cycle);
       log.hli.cycle.push_back(m.cycle);
       log.hli.path_velocity.push_back(m.path_velocity);
       log.hli.dist_prog_start_mm.push_back(m.dist_prog_start / hli_units_per_mm);
       log.hli.block_nr_r.push_back(m.block_nr_r);
       log.hli.channel_state.push_back(m.channel_state);
-    } else if (e->channel == channels::participant) {
+    } else if (ch == channels::hli_control) {
+      hil::hli_control_t m;
+      if (of_run(m)) lock_step(m.cycle);
+    } else if (ch == channels::participant) {
       hil::participant_t m;
-      if (!decode(*e, m)) { ++log.undecodable; continue; }
-      if (m.name == "cnc" && m.phase == hil::participant_t::PHASE_RUN_END) log.run_end_seen = true;
-    } else if (checker && !channels::axis_of_command(e->channel).empty()) {
-      const int axis = log.scenario->machine.axis_index(channels::axis_of_command(e->channel));
-      if (axis < 0) continue;
+      if (!of_run(m) || m.phase != hil::participant_t::PHASE_RUN_END) continue;
+      f.ended.insert(m.name);
+      if (!m.rejected.empty()) f.refused[m.name] = lcm_support::from_message(m.rejected);
+      if (m.name == "plc_sim") f.verdicts_announced = m.verdicts;
+      if (m.name != "cnc") continue;
+      f.end_cycle = m.cycle;
+      for (size_t i = 0; i < m.lost.size() && i < m.lost_cycle.size(); ++i) f.lost[m.lost[i]] = m.lost_cycle[i];
+    } else if (!channels::axis_of_command(ch).empty()) {
       hil::axis_setpoint_t m;
-      if (!decode(*e, m)) { ++log.undecodable; continue; }
+      if (!of_run(m)) continue;
+      lock_step(m.cycle);
+      const int axis = checker ? log.scenario->machine.axis_index(channels::axis_of_command(ch)) : -1;
+      if (axis < 0) continue;
       checker->add_setpoint(axis, m.cycle, m.position);
       AxisTrace& t = log.axes[axis];
       t.cmd_cycle.push_back(m.cycle);
       t.cmd_position.push_back(m.position);
       t.cmd_velocity.push_back(m.velocity);
       t.cmd_acceleration.push_back(m.acceleration);
-    } else if (checker && !channels::axis_of_state(e->channel).empty()) {
-      const int axis = log.scenario->machine.axis_index(channels::axis_of_state(e->channel));
-      if (axis < 0) continue;
+    } else if (!channels::axis_of_state(ch).empty()) {
       hil::axis_state_t m;
-      if (!decode(*e, m)) { ++log.undecodable; continue; }
+      if (!of_run(m)) continue;
+      lock_step(m.cycle);
+      const int axis = checker ? log.scenario->machine.axis_index(channels::axis_of_state(ch)) : -1;
+      if (axis < 0) continue;
       checker->add_actual(axis, m.cycle, m.position, m.velocity, m.acceleration, m.following_error);
       AxisTrace& t = log.axes[axis];
       t.act_cycle.push_back(m.cycle);
@@ -89,6 +159,8 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       t.act_velocity.push_back(m.velocity);
       t.act_acceleration.push_back(m.acceleration);
       t.following_error.push_back(m.following_error);
+    } else if (ch != channels::lcm_self_test) {
+      in_log.refuse(ch, traffic::Refusal::undecodable);  // no channel of the rig
     }
   }
   if (log.messages_per_channel.empty() && std::filesystem::file_size(path) > 0)
@@ -102,11 +174,18 @@ std::string compare_run_logs(const std::string& a, const std::string& b) {
     lcm::LogFile file(path, "r");
     if (!file.good()) throw std::runtime_error("cannot open LCM log " + path);
     std::map<std::string, std::vector<std::string>> payloads;
-    while (const lcm::LogEvent* e = file.readNextEvent())
-      // Participant announcements and LCM's own self test follow wall-clock
-      // timing, not the run.
-      if (e->channel != channels::participant && e->channel != "LCM_SELF_TEST")
-        payloads[e->channel].emplace_back(static_cast<const char*>(e->data), e->datalen);
+    while (const lcm::LogEvent* e = file.readNextEvent()) {
+      // Participant announcements, the logger's seal and LCM's own self test
+      // follow wall-clock timing, not the run.
+      if (e->channel == channels::participant || e->channel == channels::log_end ||
+          e->channel == channels::lcm_self_test)
+        continue;
+      std::string bytes(static_cast<const char*>(e->data), e->datalen);
+      // Every rig message begins with its type's 8-byte fingerprint and the
+      // run id (lcmtypes/): the one field two equal runs differ in.
+      if (bytes.size() >= run_id_end) std::fill(bytes.begin() + 8, bytes.begin() + run_id_end, '\0');
+      payloads[e->channel].push_back(std::move(bytes));
+    }
     return payloads;
   };
   auto pa = load(a), pb = load(b);

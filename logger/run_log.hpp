@@ -10,6 +10,7 @@
 #include "event.hpp"
 #include "limit_check.hpp"
 #include "scenario.hpp"
+#include "verdict.hpp"
 
 namespace hil::logger {
 
@@ -36,26 +37,28 @@ struct HliTrace {
 };
 
 struct RunLog {
-  std::optional<Scenario> scenario;  // from HIL_MANIFEST
+  std::optional<Scenario> scenario;  // from HIL_SCENARIO
   std::string rig_version;
   std::vector<LoggedEvent> events;
   std::map<std::string, int64_t> messages_per_channel;
   int64_t last_cycle = -1;
-  bool run_end_seen = false;
-  int64_t undecodable = 0;  // messages that did not decode as their channel's type
-  std::vector<AxisTrace> axes;  // in the manifest's axis order
+  std::vector<AxisTrace> axes;  // in the scenario's axis order
   HliTrace hli;
+  LogFacts facts;  // whether the log holds the whole run (verdict.hpp)
 };
 
-// Reads `path`; feeds the axis traces into a LimitChecker built from the
-// manifest, if there is one. Throws std::runtime_error if the file cannot
-// be read as an LCM log.
+// Reads `path`: the run of its first manifest (messages of other runs are
+// counted and left out); feeds the axis traces into a LimitChecker built
+// from the scenario, if there is one. Throws std::runtime_error if the file
+// cannot be read as an LCM log.
 RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report = nullptr);
 
 // Compares two logs channel by channel, message by message, on the payload
-// bytes (all times in them are simulated, so equal runs give equal bytes).
-// HIL_PARTICIPANT (the handshake) and LCM_SELF_TEST are left out: they
-// follow wall-clock order. Returns "" if identical, else the first difference.
+// bytes (all times in them are simulated, so equal runs give equal bytes)
+// but for the run id, which differs from run to run. HIL_PARTICIPANT (the
+// handshake), HIL_LOG_END (the logger's seal) and LCM_SELF_TEST are left
+// out: they follow wall-clock order. Returns "" if identical, else the
+// first difference.
 std::string compare_run_logs(const std::string& a, const std::string& b);
 
 }  // namespace hil::logger

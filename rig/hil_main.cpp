@@ -20,18 +20,27 @@ std::string own_directory() {
   return ec ? std::string(".") : exe.parent_path().string();
 }
 
+// The part of the verdict a log shows on its own (RIG-4, RIG-9): the limits,
+// and that it holds the whole run.
 int check_log(const std::string& path, const std::string& plot_dir) {
   std::optional<hil::logger::CheckReport> check;
   const hil::logger::RunLog log = hil::logger::read_run_log(path, &check);
   if (!check) {
-    std::cerr << path << ": no manifest (HIL_MANIFEST) in the log, so no limits to check against\n";
+    std::cerr << path << ": no scenario (HIL_SCENARIO) in the log, so no limits to check against\n";
+    for (const std::string& problem : hil::logger::log_problems(log.facts)) std::cerr << "  " << problem << '\n';
     return 2;
   }
   std::cout << "log " << path << ": " << (log.scenario ? log.scenario->name : "?") << ", "
-            << log.last_cycle + 1 << " cycles\n"
+            << log.last_cycle + 1 << " cycles, run id " << log.facts.run_id << '\n'
             << hil::rig::format_check(log, *check);
   if (!plot_dir.empty()) std::cout << hil::rig::draw_plots(log, *check, plot_dir) << '\n';
-  const bool passed = check->passed() && log.undecodable == 0;
+  const std::vector<std::string> problems = hil::logger::log_problems(log.facts);
+  std::cout << "refused traffic: " << hil::logger::describe_refused(log.facts) << '\n'
+            << "expectations (plc_sim): " << log.facts.verdict_pass << " passed, " << log.facts.verdict_fail
+            << " failed\n"
+            << "log complete: " << (problems.empty() ? "yes" : "NO") << '\n';
+  for (const std::string& problem : problems) std::cout << "  " << problem << '\n';
+  const bool passed = check->passed() && problems.empty();
   std::cout << (passed ? "CHECK PASSED" : "CHECK FAILED") << '\n';
   return passed ? 0 : 1;
 }

@@ -6,14 +6,17 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <memory>
 #include <sstream>
+#include <thread>
 
 #include "config_error.hpp"
 #include "drive_model.hpp"
 #include "plots.hpp"
 #include "process.hpp"
 #include "report.hpp"
+#include "run_identity.hpp"
 #include "run_log.hpp"
 #include "scenario.hpp"
 #include "scenario_engine.hpp"
@@ -28,6 +31,21 @@ std::string timestamp() {
   char buf[32];
   std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", std::localtime(&now));
   return buf;
+}
+
+// The scenario as run, for every node: scenario.yaml with the machine inline
+// and the NC program beside it in program.nc. A program of a million lines
+// inline would cost every node seconds of YAML parsing; as a file it is read.
+std::string write_resolved(const Scenario& scenario, const fs::path& dir) {
+  YAML::Node root = YAML::Clone(scenario.resolved);
+  root.remove("nc_program");
+  root["nc_file"] = "program.nc";
+  YAML::Emitter yaml;
+  yaml << root;
+  const fs::path file = dir / "scenario.yaml";
+  std::ofstream(file) << yaml.c_str() << '\n';
+  std::ofstream(dir / "program.nc", std::ios::binary) << scenario.nc_program;
+  return file.string();
 }
 
 }  // namespace
@@ -51,72 +69,88 @@ RunResult run_scenario(const RunOptions& options) {
   result.run_dir = options.run_dir.empty() ? "runs/" + scenario.name + "-" + timestamp() : options.run_dir;
   fs::create_directories(result.run_dir);
   const fs::path dir = fs::absolute(result.run_dir);
-  const std::string resolved = (dir / "scenario.yaml").string();
-  std::ofstream(resolved) << to_yaml(scenario) << '\n';
+  const std::string resolved = write_resolved(scenario, dir);
   result.log_file = (dir / "run.lcmlog").string();
   fs::remove(result.log_file);
 
   const int port = options.port > 0 ? options.port : 20000 + static_cast<int>(::getpid() % 20000);
   const std::string url = rig_url(port);
+  const std::string run_id = std::to_string(new_run_id());
   const fs::path bin = options.bin_dir;
   auto node_output = [&](const std::string& name) { return (dir / (name + ".out")).string(); };
+  auto node_args = [&](const std::string& exe) {
+    return std::vector<std::string>{(bin / exe).string(), "--scenario", resolved, "--url", url, "--run-id", run_id};
+  };
+
+  // The logger is told every participant: it records until each has ended,
+  // whenever it came up itself.
+  std::vector<std::string> logger_args = {(bin / "hil_logger").string(), "--url", url, "--out", result.log_file,
+                                          "--run-id", run_id, "--scenario", resolved, "--participants", "cnc",
+                                          "plc_sim"};
+  for (const AxisConfig& axis : scenario.machine.axes) logger_args.push_back("axis_sim " + axis.name);
 
   const auto wall_start = std::chrono::steady_clock::now();
+  auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
   std::vector<std::unique_ptr<Process>> nodes;
-  nodes.push_back(std::make_unique<Process>(
-      "logger", std::vector<std::string>{(bin / "hil_logger").string(), "--url", url, "--out", result.log_file},
-      node_output("logger")));
-  for (const AxisConfig& axis : scenario.machine.axes)
-    nodes.push_back(std::make_unique<Process>(
-        "axis_sim " + axis.name,
-        std::vector<std::string>{(bin / "axis_sim").string(), "--scenario", resolved, "--url", url, "--axis",
-                                 axis.name},
-        node_output("axis_sim_" + axis.name)));
-  nodes.push_back(std::make_unique<Process>(
-      "plc_sim", std::vector<std::string>{(bin / "plc_sim").string(), "--scenario", resolved, "--url", url},
-      node_output("plc_sim")));
-  Process cnc("cnc", {(bin / "cnc").string(), "--scenario", resolved, "--url", url}, node_output("cnc"));
+  nodes.push_back(std::make_unique<Process>("logger", logger_args, node_output("logger")));
+  for (const AxisConfig& axis : scenario.machine.axes) {
+    std::vector<std::string> args = node_args("axis_sim");
+    args.insert(args.end(), {"--axis", axis.name});
+    nodes.push_back(std::make_unique<Process>("axis_sim " + axis.name, args, node_output("axis_sim_" + axis.name)));
+  }
+  nodes.push_back(std::make_unique<Process>("plc_sim", node_args("plc_sim"), node_output("plc_sim")));
+  Process cnc("cnc", node_args("cnc"), node_output("cnc"));
 
   // Lock-step runs faster than real time; this bound only catches a hang.
-  const auto wall_limit = std::chrono::milliseconds(static_cast<int64_t>(60000 + 20000 * scenario.max_time_s));
-  std::ostringstream processes;
-  const std::optional<int> cnc_status = cnc.wait_for(wall_limit);
-  bool all_ok = cnc_status && *cnc_status == 0;
-  processes << "cnc " << (cnc_status ? std::to_string(*cnc_status) : "hung, killed: " + std::to_string(cnc.stop()));
-  for (auto& node : nodes) {
-    std::optional<int> status = node->wait_for(std::chrono::seconds(10));
-    const int code = status ? *status : node->stop();
-    // plc_sim exits 1 for failed expectations: reported below, not a crash.
-    all_ok = all_ok && (code == 0 || (node->name() == "plc_sim" && code == 1));
-    processes << ", " << node->name() << ' ' << (status ? std::to_string(code) : "hung, killed");
+  // A node that fails while the CNC runs is noted with the time (a node
+  // exits 0 only after the CNC's RUN_END).
+  const double wall_limit_s = 60 + 20 * scenario.max_time_s;
+  std::vector<std::optional<double>> exited_during_run(nodes.size());
+  std::optional<int> cnc_status;
+  while (!(cnc_status = cnc.poll()) && wall_s() < wall_limit_s) {
+    for (size_t i = 0; i < nodes.size(); ++i)
+      if (const auto status = nodes[i]->poll(); status && *status != 0 && !exited_during_run[i])
+        exited_during_run[i] = wall_s();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  std::vector<logger::ProcessExit> exits{{"cnc", cnc_status}};
+  std::ostringstream processes;
+  processes << "cnc " << (cnc_status ? std::to_string(*cnc_status) : "hung, killed: " + std::to_string(cnc.stop()));
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    Process& node = *nodes[i];
+    const std::optional<int> status = node.wait_for(std::chrono::seconds(10));
+    exits.push_back({node.name(), status});
+    processes << ", " << node.name() << ' ' << (status ? std::to_string(*status) : "hung, killed");
+    if (!status) node.stop();
+    if (exited_during_run[i])
+      processes << " (" << std::fixed << std::setprecision(1) << *exited_during_run[i]
+                << " s into the run, while the cnc ran)" << std::defaultfloat;
+  }
+  const double run_wall_s = wall_s();
 
   std::optional<logger::CheckReport> check;
   const logger::RunLog log = logger::read_run_log(result.log_file, &check);
-  int expectations_failed = 0, expectations_passed = 0;
-  for (const auto& e : log.events) {
-    expectations_passed += e.event.verdict == Verdict::pass ? 1 : 0;
-    expectations_failed += e.event.verdict == Verdict::fail ? 1 : 0;
-  }
   // Violations the scenario provokes on purpose must be found; no other may be.
-  bool check_passed = check.has_value();
+  std::string check_failure = check ? "" : "no scenario in the log, so no limits to check against";
   std::ostringstream violations_expected;
   if (check) {
+    int unexpected = 0;
     for (const auto& v : check->violations) {
       bool expected = false;
       for (const auto& e : scenario.expected_violations) expected = expected || e.matches(v.axis, v.quantity);
-      check_passed = check_passed && expected;
+      unexpected += expected ? 0 : 1;
     }
+    if (unexpected > 0) check_failure = std::to_string(unexpected) + " limit violation(s) the scenario does not expect";
     for (const auto& e : scenario.expected_violations) {
       bool found = false;
       for (const auto& v : check->violations) found = found || e.matches(v.axis, v.quantity);
-      check_passed = check_passed && found;
+      if (!found && check_failure.empty()) check_failure = "an expected violation was not found";
       violations_expected << "expected violation: axis " << e.axis << " " << e.quantity << ": "
                           << (found ? "found" : "NOT FOUND") << '\n';
     }
   }
-  result.passed = all_ok && log.run_end_seen && check_passed && expectations_failed == 0 && log.undecodable == 0;
+  const logger::RunVerdict verdict = logger::judge_run(exits, log.facts, check_failure);
+  result.passed = verdict.passed;
 
   std::ostringstream out;
   const double simulated_s = (log.last_cycle + 1) * scenario.machine.cycle_time_s();
@@ -128,16 +162,25 @@ RunResult run_scenario(const RunOptions& options) {
     for (size_t i = 0; i < scenario.requirements.size(); ++i) out << (i ? " " : "") << scenario.requirements[i];
     out << ")";
   }
-  out << ": " << (result.passed ? "PASSED" : "FAILED") << '\n'
-      << "run folder: " << result.run_dir << '\n'
-      << "LCM: " << url << '\n'
+  out << ": " << (result.passed ? "PASSED" : "FAILED") << '\n';
+  for (const std::string& reason : verdict.reasons) out << "  because " << reason << '\n';
+  const std::vector<std::string> problems = logger::log_problems(log.facts);
+  out << "run folder: " << result.run_dir << '\n'
+      << "LCM: " << url << ", run id " << run_id << '\n'
       << "log: " << result.log_file << " (" << messages << " messages, " << log.last_cycle + 1 << " cycles = "
-      << simulated_s << " s simulated in " << wall_s << " s wall, " << simulated_s / wall_s
+      << simulated_s << " s simulated in " << run_wall_s << " s wall, " << simulated_s / run_wall_s
       << " x real time)\n"
-      << "exit status: " << processes.str() << (log.run_end_seen ? "" : "; no RUN_END in the log") << '\n'
-      << "expectations (plc_sim): " << expectations_passed << " passed, " << expectations_failed << " failed\n";
+      << "log complete: " << (problems.empty() ? "yes (every participant ended, every cycle on every lock-step "
+                                                 "channel, closed by the logger)"
+                                               : "NO (" + std::to_string(problems.size()) + " problems above)")
+      << '\n'
+      << "exit status: " << processes.str() << '\n'
+      << "refused traffic: " << logger::describe_refused(log.facts) << '\n'
+      << "expectations (plc_sim): " << log.facts.verdict_pass << " passed, " << log.facts.verdict_fail
+      << " failed; the scenario has " << log.facts.expectations << ", plc_sim published "
+      << (log.facts.verdicts_announced ? std::to_string(*log.facts.verdicts_announced) : "?") << '\n';
   if (check) out << format_check(log, *check) << violations_expected.str() << draw_plots(log, *check, (dir / "plots").string()) << '\n';
-  else out << "offline check: the log has no manifest\n";
+  else out << "offline check: the log has no scenario (HIL_SCENARIO)\n";
   result.report = out.str();
   std::ofstream(dir / "report.txt") << result.report;
   return result;

@@ -5,9 +5,10 @@
 #include <lcm/lcm-cpp.hpp>
 #include <spdlog/spdlog.h>
 
-#include "drive_monitor.hpp"
 #include "channels.hpp"
 #include "drive_model.hpp"
+#include "drive_monitor.hpp"
+#include "inbox.hpp"
 #include "messages.hpp"
 #include "node_options.hpp"
 #include "participant.hpp"
@@ -19,16 +20,16 @@ using namespace hil;
 
 class AxisSimNode {
  public:
-  AxisSimNode(const AxisConfig& axis, double cycle_time_s, lcm::LCM& lcm)
-      : axis_(axis), lcm_(lcm), drive_(axis::drive_parameters(axis, cycle_time_s)), monitor_(axis),
-        source_("axis_sim " + axis.name) {
-    lcm_.subscribeFunction(
-           channels::axis_command(axis.name),
-           +[](const lcm::ReceiveBuffer*, const std::string&, const hil::axis_setpoint_t* m, AxisSimNode* self) {
-             self->on_setpoint(*m);
-           },
-           this)
-        ->setQueueCapacity(10000);
+  AxisSimNode(const AxisConfig& axis, double cycle_time_s, lcm::LCM& lcm, lcm_support::Inbox& inbox)
+      : axis_(axis), lcm_(lcm), run_id_(inbox.run_id()), drive_(axis::drive_parameters(axis, cycle_time_s)),
+        monitor_(axis), source_("axis_sim " + axis.name) {
+    inbox.on<hil::axis_setpoint_t>(channels::axis_command(axis.name),
+                                   [this](const hil::axis_setpoint_t& m, const lcm::ReceiveBuffer&) {
+                                     // each cycle is integrated once, in order
+                                     if (m.cycle != last_cycle_ + 1 || m.axis != axis_.name) return false;
+                                     on_setpoint(m);
+                                     return true;
+                                   });
   }
 
   const std::string& name() const { return source_; }
@@ -36,7 +37,6 @@ class AxisSimNode {
 
  private:
   void on_setpoint(const hil::axis_setpoint_t& m) {
-    if (m.cycle <= last_cycle_) return;  // each cycle is integrated once
     last_cycle_ = m.cycle;
     const axis::DriveOutput out = drive_.step(m.position, m.velocity);
     std::vector<Event> events;
@@ -44,10 +44,12 @@ class AxisSimNode {
         {m.position, m.velocity, out.position, out.velocity, out.acceleration, out.following_error}, events);
     for (const Event& e : events) {
       spdlog::warn("{}", describe(e));
-      const hil::event_t em = lcm_support::to_message(e, m.cycle, m.utime, source_);
+      hil::event_t em = lcm_support::to_message(e, m.cycle, m.utime, source_);
+      em.run_id = run_id_;
       lcm_.publish(channels::event, &em);
     }
     hil::axis_state_t s;
+    s.run_id = run_id_;
     s.utime = m.utime;
     s.cycle = m.cycle;
     s.axis = axis_.name;
@@ -63,6 +65,7 @@ class AxisSimNode {
 
   AxisConfig axis_;
   lcm::LCM& lcm_;
+  int64_t run_id_;
   axis::DriveModel drive_;
   axis::DriveMonitor monitor_;
   std::string source_;
@@ -84,8 +87,9 @@ int main(int argc, char** argv) {
     if (index < 0) throw std::runtime_error("axis '" + axis_name + "' is not on the machine");
     lcm::LCM lcm(options.url);
     hil::lcm_support::require_good(lcm, options.url);
-    AxisSimNode node(scenario.machine.axes[index], scenario.machine.cycle_time_s(), lcm);
-    hil::lcm_support::Participant participant(lcm, node.name());
+    hil::lcm_support::Inbox inbox(lcm, options.run_id);
+    AxisSimNode node(scenario.machine.axes[index], scenario.machine.cycle_time_s(), lcm, inbox);
+    hil::lcm_support::Participant participant(lcm, inbox, node.name());
     if (!participant.wait_for_start(std::chrono::seconds(30))) {
       spdlog::error("the CNC did not start a run within 30 s");
       return 2;
@@ -95,6 +99,7 @@ int main(int argc, char** argv) {
       return 2;
     }
     participant.announce_end(node.last_cycle());
+    if (!inbox.ledger().empty()) spdlog::warn("refused: {}", inbox.ledger().describe());
     return 0;
   });
 }

@@ -126,6 +126,10 @@ void Channel::drive_error(const std::string& axis, const std::string& what) {
   if (error_stop_.begin(axis, what, hli_.channel_state, events_)) update_hold();
 }
 
+void Channel::error_stop(const std::string& reason) {
+  if (error_stop_.begin_for(reason, "", hli_.channel_state, events_)) update_hold();
+}
+
 PathHold Channel::hold() const {
   PathHold hold;
   hold.set(HoldReason::feedhold, hli_.feedhold.state_r);

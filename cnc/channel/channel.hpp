@@ -51,6 +51,9 @@ class Channel : private PathObserver {
 
   // A drive reported a monitoring error (RIG-3); applied before the next step().
   void drive_error(const std::string& axis, const std::string& what);
+  // The rig lost a participant that is no drive (the PLC or the logger fell
+  // silent, RIG-6): the same error stop, for that reason.
+  void error_stop(const std::string& reason);
 
  private:
   // The phases of a cycle.

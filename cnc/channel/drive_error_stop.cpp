@@ -2,11 +2,10 @@
 
 namespace hil::cnc {
 
-bool DriveErrorStop::begin(const std::string& axis, const std::string& what, ChannelState& state,
-                           ChannelEvents& events) {
+bool DriveErrorStop::begin_for(const std::string& reason, const std::string& axis, ChannelState& state,
+                               ChannelEvents& events) {
   if (state == ChannelState::error || state == ChannelState::program_end) return false;
-  Event e = events.at_block(Severity::error,
-                            "channel stopped: drive error on axis " + axis + " (" + what + "); program aborted");
+  Event e = events.at_block(Severity::error, "channel stopped: " + reason + "; program aborted");
   e.axis = axis;
   events.raise(e);
   stopping_ = state == ChannelState::active;

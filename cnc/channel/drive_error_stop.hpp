@@ -14,7 +14,11 @@ namespace hil::cnc {
 class DriveErrorStop {
  public:
   // A drive error on `axis`; false if the channel had ended already.
-  bool begin(const std::string& axis, const std::string& what, ChannelState& state, ChannelEvents& events);
+  bool begin(const std::string& axis, const std::string& what, ChannelState& state, ChannelEvents& events) {
+    return begin_for("drive error on axis " + axis + " (" + what + ")", axis, state, events);
+  }
+  // The same stop for any reason (the axis it concerns, or "").
+  bool begin_for(const std::string& reason, const std::string& axis, ChannelState& state, ChannelEvents& events);
   // Still moving towards the stop.
   bool stopping() const { return stopping_; }
   void update(bool standing) {

@@ -24,10 +24,19 @@ struct DriveError {
   std::string what;  // the monitors, e.g. "acceleration P-AXIS-00442"
 };
 
+// A participant that stopped answering (the lock-step watchdog, RIG-6): the
+// run goes on without it, and the channel stops as on a drive error.
+struct LostParticipant {
+  std::string name;  // "axis_sim X", "plc_sim", "logger"
+  std::string axis;  // the drive's axis, "" for any other participant
+  std::string what;  // e.g. "no answer to cycle 812 within 5000 ms"
+};
+
 // What came back for one cycle.
 struct CycleAnswers {
   std::optional<HliControl> control;  // none: the PLC's last control stays in force
   std::vector<DriveError> drive_errors;
+  std::vector<LostParticipant> lost;  // lost in this cycle
 };
 
 class CyclePolicy {

@@ -5,7 +5,9 @@
 #include <hil/event_t.hpp>
 #include <hil/hli_control_t.hpp>
 #include <hil/hli_state_t.hpp>
+#include <hil/participant_t.hpp>
 #include <hil/run_manifest_t.hpp>
+#include <hil/scenario_text_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <deque>
@@ -15,24 +17,27 @@
 
 #include "channel.hpp"
 #include "channels.hpp"
-#include "cycle_messages.hpp"
-#include "messages.hpp"
 #include "cycle_loop.hpp"
+#include "cycle_messages.hpp"
+#include "inbox.hpp"
+#include "lock_step.hpp"
+#include "messages.hpp"
+#include "run_identity.hpp"
 #include "scenario.hpp"
 
 namespace hil::cnc_node {
 namespace {
 
-template <typename T>
-bool decode(const void* data, size_t size, T& message) {
-  return message.decode(data, 0, static_cast<int>(size)) == static_cast<int>(size);
-}
+using lcm_support::decode;
 
 // What the recorded run holds: the inputs to replay and the outputs to match.
 struct Recording {
   std::optional<Scenario> scenario;
-  std::map<int64_t, HliControl> controls;                // by the cycle they answer
-  std::map<int64_t, std::vector<int32_t>> drive_errors;  // by cycle, per axis
+  int64_t run_id = 0;
+  int answer_timeout_ms = 0;
+  std::map<int64_t, HliControl> controls;  // by the cycle they answer
+  std::map<int64_t, std::vector<std::optional<int32_t>>> axis_errors;  // by cycle, per axis: the answer's bits
+  std::map<std::string, int64_t> lost;     // participants the CNC lost, and the cycle
   std::map<std::string, std::deque<std::string>> outputs;  // the CNC's messages per channel
 };
 
@@ -42,20 +47,29 @@ Recording read_recording(const std::string& path) {
   Recording r;
   while (const lcm::LogEvent* e = file.readNextEvent()) {
     const std::string& ch = e->channel;
-    const size_t n = static_cast<size_t>(e->datalen);
+    const uint32_t n = static_cast<uint32_t>(e->datalen);
     if (ch == channels::manifest) {
       hil::run_manifest_t m;
-      if (decode(e->data, n, m)) r.scenario = parse_scenario(YAML::Load(m.scenario_yaml));
+      if (!decode(e->data, n, m)) continue;
+      r.run_id = m.run_id;
+      r.answer_timeout_ms = m.answer_timeout_ms;
+    } else if (ch == channels::scenario) {
+      hil::scenario_text_t m;
+      if (decode(e->data, n, m)) r.scenario = scenario_from_text(m.yaml, m.nc_program);
+    } else if (ch == channels::participant) {
+      hil::participant_t m;
+      if (!decode(e->data, n, m) || m.name != "cnc") continue;
+      for (size_t i = 0; i < m.lost.size(); ++i) r.lost[m.lost[i]] = m.lost_cycle[i];
     } else if (ch == channels::hli_control) {
       hil::hli_control_t m;
-      if (decode(e->data, n, m)) r.controls[m.cycle] = lcm_support::from_message(m);
+      if (decode(e->data, n, m)) r.controls.emplace(m.cycle, lcm_support::from_message(m));
     } else if (r.scenario && !channels::axis_of_state(ch).empty()) {
       hil::axis_state_t m;
       const int axis = r.scenario->machine.axis_index(channels::axis_of_state(ch));
       if (axis < 0 || !decode(e->data, n, m)) continue;
-      auto& errors = r.drive_errors[m.cycle];
-      errors.resize(r.scenario->machine.axes.size(), 0);
-      errors[axis] = m.errors;
+      auto& errors = r.axis_errors[m.cycle];
+      errors.resize(r.scenario->machine.axes.size());
+      if (!errors[axis]) errors[axis] = m.errors;
     } else if (ch == channels::hli_state || !channels::axis_of_command(ch).empty()) {
       r.outputs[ch].emplace_back(static_cast<const char*>(e->data), n);
     } else if (ch == channels::event) {
@@ -63,7 +77,7 @@ Recording read_recording(const std::string& path) {
       if (decode(e->data, n, m) && m.source == "cnc") r.outputs[ch].emplace_back(static_cast<const char*>(e->data), n);
     }
   }
-  if (!r.scenario) throw std::runtime_error(path + ": no manifest (HIL_MANIFEST): nothing to rerun");
+  if (!r.scenario) throw std::runtime_error(path + ": no scenario (HIL_SCENARIO): nothing to rerun");
   return r;
 }
 
@@ -98,20 +112,29 @@ std::string describe_difference(const std::string& channel, const std::string& r
 // for byte.
 class RecordedInput : public cnc::CyclePolicy {
  public:
-  RecordedInput(Recording recording, std::ostream& out) : rec_(std::move(recording)), out_(out) {}
+  RecordedInput(Recording recording, std::ostream& out)
+      : rec_(std::move(recording)), out_(out), lock_step_(machine(), false, rec_.answer_timeout_ms, 0) {}
 
   bool publish(int64_t k, const cnc::Channel& channel, const std::vector<Event>& events) override {
-    for (const auto& m : cycle_messages(channel, machine(), events, k))
+    for (const auto& m : cycle_messages(channel, machine(), events, k, rec_.run_id))
       if (!matches(k, m)) return false;
     return true;
   }
-  bool publish_event(int64_t k, const Event& event) override { return matches(k, event_message(event, machine(), k)); }
+  bool publish_event(int64_t k, const Event& event) override {
+    return matches(k, event_message(event, machine(), k, rec_.run_id));
+  }
+  // The recorded answers go through the live node's LockStep; an answer the
+  // recorded CNC no longer took (from a participant it had lost) is left out.
   std::optional<cnc::CycleAnswers> answers(int64_t k) override {
-    cnc::CycleAnswers answers;
-    if (const auto c = rec_.controls.find(k); c != rec_.controls.end()) answers.control = c->second;
-    if (const auto e = rec_.drive_errors.find(k); e != rec_.drive_errors.end())
-      answers.drive_errors = drive_errors(machine(), e->second);
-    return answers;
+    lock_step_.begin(k);
+    if (const auto c = rec_.controls.find(k); c != rec_.controls.end() && !lost_by("plc_sim", k))
+      lock_step_.take_plc(k, c->second);
+    if (const auto e = rec_.axis_errors.find(k); e != rec_.axis_errors.end())
+      for (size_t i = 0; i < e->second.size(); ++i)
+        if (e->second[i] && !lost_by("axis_sim " + machine().axes[i].name, k)) lock_step_.take_axis(i, k, *e->second[i]);
+    if (!lock_step_.complete()) lock_step_.lose_silent();
+    LockStep::Taken taken = lock_step_.take();
+    return cnc::CycleAnswers{taken.control, drive_errors(machine(), taken.axis_errors), std::move(taken.lost)};
   }
 
   const Scenario& scenario() const { return *rec_.scenario; }
@@ -129,6 +152,10 @@ class RecordedInput : public cnc::CyclePolicy {
 
  private:
   const MachineConfig& machine() const { return rec_.scenario->machine; }
+  bool lost_by(const std::string& participant, int64_t k) const {
+    const auto lost = rec_.lost.find(participant);
+    return lost != rec_.lost.end() && lost->second <= k;
+  }
   bool matches(int64_t k, const EncodedMessage& m) {
     auto& queue = rec_.outputs[m.channel];
     const std::string now(m.bytes.begin(), m.bytes.end());
@@ -148,6 +175,7 @@ class RecordedInput : public cnc::CyclePolicy {
 
   Recording rec_;
   std::ostream& out_;
+  LockStep lock_step_;
   int64_t compared_ = 0;
 };
 

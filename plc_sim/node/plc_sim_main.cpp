@@ -1,6 +1,10 @@
 // The `plc_sim` node (RIG-1, RIG-5): the PLC. Answers every HLI_STATE with
 // an HLI_CONTROL from the scenario's timeline, checks the expectations and
-// reports them at the end of the run.
+// reports them at the end of the run: one event per expectation, its
+// verdict a field, and their number in its RUN_END, so that the rig can
+// tell a log that lost a verdict from one that holds them all (RIG-9).
+// Failed expectations are a verdict, not an error: the exit status is 0
+// whenever the node did its job.
 #include <hil/event_t.hpp>
 #include <hil/hli_control_t.hpp>
 #include <hil/hli_state_t.hpp>
@@ -8,6 +12,7 @@
 #include <spdlog/spdlog.h>
 
 #include "channels.hpp"
+#include "inbox.hpp"
 #include "messages.hpp"
 #include "node_options.hpp"
 #include "participant.hpp"
@@ -21,52 +26,50 @@ const std::string source = "plc_sim";
 
 class PlcSimNode {
  public:
-  PlcSimNode(const Scenario& scenario, lcm::LCM& lcm) : engine_(scenario), lcm_(lcm) {
-    lcm_.subscribeFunction(
-           channels::hli_state,
-           +[](const lcm::ReceiveBuffer*, const std::string&, const hil::hli_state_t* m, PlcSimNode* self) {
-             self->on_state(*m);
-           },
-           this)
-        ->setQueueCapacity(10000);
-    lcm_.subscribeFunction(
-           channels::event,
-           +[](const lcm::ReceiveBuffer*, const std::string&, const hil::event_t* m, PlcSimNode* self) {
-             if (m->source != source) self->engine_.observe(lcm_support::from_message(*m));
-           },
-           this)
-        ->setQueueCapacity(10000);
+  PlcSimNode(const Scenario& scenario, lcm::LCM& lcm, lcm_support::Inbox& inbox)
+      : engine_(scenario), lcm_(lcm), run_id_(inbox.run_id()) {
+    inbox.on<hil::hli_state_t>(channels::hli_state, [this](const hil::hli_state_t& m, const lcm::ReceiveBuffer&) {
+      if (m.cycle != last_cycle_ + 1) return false;  // each cycle once, in order
+      on_state(m);
+      return true;
+    });
+    inbox.on<hil::event_t>(channels::event, [this](const hil::event_t& m, const lcm::ReceiveBuffer&) {
+      if (m.source != source) engine_.observe(lcm_support::from_message(m));
+      return true;
+    });
   }
 
   // Publishes one event per expectation, its verdict a field (the text is
-  // for people); returns the number that failed.
+  // for people); returns how many it published.
   int report(int64_t cycle) {
-    int failed = 0;
+    int published = 0;
     for (const plc::ExpectationResult& r : engine_.finish()) {
       Event e;
       e.severity = r.passed ? Severity::info : Severity::error;
       e.verdict = r.passed ? Verdict::pass : Verdict::fail;  // what the rig counts
       e.message = std::string(r.passed ? "PASS " : "FAIL ") + r.what + ":" + r.detail;
-      failed += r.passed ? 0 : 1;
       (r.passed ? spdlog::info("{}", e.message) : spdlog::error("{}", e.message));
-      const hil::event_t m = lcm_support::to_message(e, cycle, utime_, source);
+      hil::event_t m = lcm_support::to_message(e, cycle, utime_, source);
+      m.run_id = run_id_;
       lcm_.publish(channels::event, &m);
+      ++published;
     }
-    return failed;
+    return published;
   }
 
  private:
   void on_state(const hil::hli_state_t& m) {
-    if (m.cycle <= last_cycle_) return;
     last_cycle_ = m.cycle;
     utime_ = m.utime;
     const HliControl& control = engine_.cycle(lcm_support::from_message(m));
-    const hil::hli_control_t out = lcm_support::to_message(control, m.utime);
+    hil::hli_control_t out = lcm_support::to_message(control, m.utime);
+    out.run_id = run_id_;
     lcm_.publish(channels::hli_control, &out);
   }
 
   plc::ScenarioEngine engine_;
   lcm::LCM& lcm_;
+  int64_t run_id_;
   int64_t last_cycle_ = -1;
   int64_t utime_ = 0;
 };
@@ -82,8 +85,9 @@ int main(int argc, char** argv) {
     const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
     lcm::LCM lcm(options.url);
     hil::lcm_support::require_good(lcm, options.url);
-    PlcSimNode node(scenario, lcm);
-    hil::lcm_support::Participant participant(lcm, source);
+    hil::lcm_support::Inbox inbox(lcm, options.run_id);
+    PlcSimNode node(scenario, lcm, inbox);
+    hil::lcm_support::Participant participant(lcm, inbox, source);
     if (!participant.wait_for_start(std::chrono::seconds(30))) {
       spdlog::error("the CNC did not start a run within 30 s");
       return 2;
@@ -92,8 +96,9 @@ int main(int argc, char** argv) {
       spdlog::error("no message for 10 s: the CNC is gone");
       return 2;
     }
-    const int failed = node.report(participant.end_cycle());
-    participant.announce_end(participant.end_cycle());
-    return failed == 0 ? 0 : 1;
+    const int verdicts = node.report(participant.end_cycle());
+    participant.announce_end(participant.end_cycle(), verdicts);
+    if (!inbox.ledger().empty()) spdlog::warn("refused: {}", inbox.ledger().describe());
+    return 0;
   });
 }

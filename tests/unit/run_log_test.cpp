@@ -2,13 +2,20 @@
 #include <catch2/catch.hpp>
 
 #include <hil/axis_setpoint_t.hpp>
+#include <hil/axis_state_t.hpp>
 #include <hil/event_t.hpp>
+#include <hil/hli_control_t.hpp>
+#include <hil/hli_state_t.hpp>
+#include <hil/log_summary_t.hpp>
+#include <hil/participant_t.hpp>
 #include <hil/run_manifest_t.hpp>
+#include <hil/scenario_text_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include "channels.hpp"
@@ -35,34 +42,115 @@ std::string temp_path(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("hil_test_" + name)).string();
 }
 
-// A log of an X axis moving at `v` mm/s for 100 cycles.
-void write_log(const std::string& path, double v, bool with_event) {
+// A synthetic run as hil_logger records it: manifest, scenario, 100 cycles
+// of every lock-step channel (the X axis moving at `v` mm/s), the PLC's one
+// verdict, every RUN_END and the logger's seal. `keep` may drop messages.
+struct SyntheticRun {
+  double v = 100;
+  bool with_event = false;
+  int64_t run_id = 42;
+  bool sealed = true;
+  Verdict verdict = Verdict::pass;
+  std::function<bool(const std::string& channel, int64_t cycle)> keep = [](const std::string&, int64_t) {
+    return true;
+  };
+};
+
+void write_log(const std::string& path, const SyntheticRun& run) {
   std::ifstream machine(std::string(HIL_SOURCE_DIR) + "/config/xyz_machine.yaml");
   std::stringstream yaml;
   yaml << "name: synthetic\nmachine:\n";
   for (std::string line; std::getline(machine, line);) yaml << "  " << line << '\n';
-  yaml << "nc_program: \"M30\\n\"\n";
+  yaml << "nc_program: \"M30\\n\"\nexpect:\n  - when: program_end\n    channel_state: PROGRAM_END\n";
   lcm::LogFile log(path, "w");
   REQUIRE(log.good());
-  hil::run_manifest_t manifest;
-  manifest.scenario_yaml = yaml.str();
+  const std::vector<std::string> axes = {"X", "Y", "Z"};
+  hil::run_manifest_t manifest{};
+  manifest.run_id = run.run_id;
   manifest.rig_version = "test";
+  manifest.participants = {"axis_sim X", "axis_sim Y", "axis_sim Z", "plc_sim", "logger"};
+  manifest.n_participants = 5;
   write(log, channels::manifest, manifest);
-  for (int k = 0; k < 100; ++k) {
-    hil::axis_setpoint_t sp;
-    sp.cycle = k;
-    sp.axis = "X";
-    sp.position = v * k * 0.001;
-    write(log, channels::axis_command("X"), sp);
+  hil::scenario_text_t scenario{};
+  scenario.run_id = run.run_id;
+  scenario.yaml = yaml.str();
+  write(log, channels::scenario, scenario);
+  const int64_t last = 99;
+  for (int64_t k = 0; k <= last; ++k) {
+    for (const auto& axis : axes) {
+      hil::axis_setpoint_t sp{};
+      sp.run_id = run.run_id;
+      sp.cycle = k;
+      sp.axis = axis;
+      sp.position = axis == "X" ? run.v * k * 0.001 : 0;
+      if (run.keep(channels::axis_command(axis), k)) write(log, channels::axis_command(axis), sp);
+      hil::axis_state_t st{};
+      st.run_id = run.run_id;
+      st.cycle = k;
+      st.axis = axis;
+      st.position = sp.position;
+      if (run.keep(channels::axis_state(axis), k)) write(log, channels::axis_state(axis), st);
+    }
+    hil::hli_state_t hs{};
+    hs.run_id = run.run_id;
+    hs.cycle = k;
+    if (run.keep(channels::hli_state, k)) write(log, channels::hli_state, hs);
+    hil::hli_control_t hc{};
+    hc.run_id = run.run_id;
+    hc.cycle = k;
+    if (run.keep(channels::hli_control, k)) write(log, channels::hli_control, hc);
   }
-  if (with_event) {
-    hil::event_t e;
+  hil::event_t e{};
+  e.run_id = run.run_id;
+  if (run.with_event) {
     e.cycle = 50;
     e.severity = hil::event_t::SEVERITY_WARNING;
     e.id = 50810;
     e.source = "cnc";
     write(log, channels::event, e);
   }
+  e = hil::event_t();
+  e.run_id = run.run_id;
+  e.cycle = last;
+  e.source = "plc_sim";
+  e.verdict = static_cast<int8_t>(run.verdict);
+  if (run.keep(channels::event, last)) write(log, channels::event, e);
+  for (const std::string name : {"cnc", "axis_sim X", "axis_sim Y", "axis_sim Z", "plc_sim"}) {
+    hil::participant_t end{};
+    end.run_id = run.run_id;
+    end.cycle = last;
+    end.name = name;
+    end.phase = hil::participant_t::PHASE_RUN_END;
+    end.verdicts = name == "plc_sim" ? 1 : 0;
+    if (run.keep(channels::participant + " " + name, last)) write(log, channels::participant, end);
+  }
+  if (!run.sealed) return;
+  hil::log_summary_t seal{};
+  seal.run_id = run.run_id;
+  seal.cycle = last;
+  write(log, channels::log_end, seal);
+}
+
+void write_log(const std::string& path, double v, bool with_event) {
+  SyntheticRun run;
+  run.v = v;
+  run.with_event = with_event;
+  write_log(path, run);
+}
+
+// The problems `hil check` names for a synthetic run.
+std::vector<std::string> problems_of(const SyntheticRun& run) {
+  const std::string path = temp_path("problems.lcmlog");
+  write_log(path, run);
+  const logger::RunLog log = logger::read_run_log(path);
+  std::remove(path.c_str());
+  return logger::log_problems(log.facts);
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  std::string out;
+  for (const auto& line : lines) out += line + "\n";
+  return out;
 }
 
 }  // namespace
@@ -76,9 +164,10 @@ TEST_CASE("RIG-4 run log: a log is read back with its manifest, events and a lim
   CHECK(log.scenario->name == "synthetic");
   CHECK(log.rig_version == "test");
   CHECK(log.messages_per_channel.at("AXIS_X_CMD") == 100);
-  REQUIRE(log.events.size() == 1);
+  REQUIRE(log.events.size() == 2);
   CHECK(log.events[0].event.id == 50810);
   CHECK(log.events[0].cycle == 50);
+  CHECK(logger::log_problems(log.facts).empty());
   REQUIRE(report);
   REQUIRE_FALSE(report->passed());
   CHECK(report->violations[0].quantity == "commanded velocity");
@@ -126,4 +215,82 @@ TEST_CASE("RIG-4 plots: the traces and a gnuplot script with limit lines and sha
   CHECK(lines == 100);
   std::filesystem::remove_all(dir);
   std::remove(path.c_str());
+}
+
+TEST_CASE("RIG-9 run log: a whole run has no problems; a cut or thinned one names each", "[log][verdict]") {
+  CHECK(problems_of(SyntheticRun()).empty());
+
+  SyntheticRun thinned;  // 44 % of the drives' answers lost, as in the issue
+  thinned.keep = [](const std::string& channel, int64_t cycle) {
+    return channels::axis_of_state(channel).empty() || cycle % 25 >= 11;
+  };
+  const std::string t = joined(problems_of(thinned));
+  CHECK_THAT(t, Catch::Contains("AXIS_X_STATE: 44 of 100 cycles missing (the first: 0)"));
+  CHECK_THAT(t, Catch::Contains("AXIS_Z_STATE: 44 of 100 cycles missing"));
+
+  SyntheticRun cut;  // the logger died: no seal, no RUN_END of plc_sim
+  cut.sealed = false;
+  cut.keep = [](const std::string& channel, int64_t) { return channel != channels::participant + " plc_sim"; };
+  const std::string c = joined(problems_of(cut));
+  CHECK_THAT(c, Catch::Contains("the logger did not close the log (no HIL_LOG_END)"));
+  CHECK_THAT(c, Catch::Contains("no RUN_END from plc_sim"));
+
+  SyntheticRun no_end;
+  no_end.keep = [](const std::string& channel, int64_t) { return channel != channels::participant + " cnc"; };
+  CHECK_THAT(joined(problems_of(no_end)), Catch::Contains("no RUN_END from the cnc"));
+
+  SyntheticRun lost_verdict;  // plc_sim published 1 verdict, the log holds none
+  lost_verdict.keep = [](const std::string& channel, int64_t) { return channel != channels::event; };
+  const std::string v = joined(problems_of(lost_verdict));
+  CHECK_THAT(v, Catch::Contains("the log holds 0 verdict event(s), plc_sim published 1"));
+  CHECK_THAT(v, Catch::Contains("the scenario has 1 expectation(s), the log holds 0 verdict(s)"));
+}
+
+TEST_CASE("RIG-9 run log: undecodable and foreign messages are named per channel; only the first are a problem",
+          "[log][verdict]") {
+  const std::string path = temp_path("traffic.lcmlog");
+  write_log(path, SyntheticRun());
+  {
+    lcm::LogFile log(path, "a");
+    REQUIRE(log.good());
+    hil::hli_state_t foreign{};  // another run on the same port
+    foreign.run_id = 7;
+    write(log, channels::hli_state, foreign);
+    hil::event_t wrong_type{};  // not an axis_state_t
+    wrong_type.run_id = 42;
+    write(log, channels::axis_state("X"), wrong_type);
+  }
+  const logger::RunLog log = logger::read_run_log(path);
+  std::remove(path.c_str());
+  CHECK(log.facts.refused.at("log").describe() == "AXIS_X_STATE: 1 undecodable; HLI_STATE: 1 foreign run");
+  const std::string p = joined(logger::log_problems(log.facts));
+  CHECK_THAT(p, Catch::Contains("in the log messages of this run or unreadable: AXIS_X_STATE: 1 undecodable"));
+  CHECK(log.hli.cycle.size() == 100);  // the foreign state is no part of the traces
+}
+
+TEST_CASE("RIG-9 run log: a repeated or out-of-run cycle on a lock-step channel is a problem", "[log][verdict]") {
+  const std::string path = temp_path("forged.lcmlog");
+  write_log(path, SyntheticRun());
+  {
+    lcm::LogFile log(path, "a");
+    hil::axis_state_t forged{};
+    forged.run_id = 42;
+    forged.cycle = 1000;
+    forged.axis = "Y";
+    write(log, channels::axis_state("Y"), forged);
+  }
+  const logger::RunLog log = logger::read_run_log(path);
+  std::remove(path.c_str());
+  CHECK_THAT(joined(logger::log_problems(log.facts)),
+             Catch::Contains("AXIS_Y_STATE: 1 message(s) of a wrong cycle (repeated, or outside 0..99)"));
+}
+
+TEST_CASE("RIG-6 run log: comparison ignores the run id, which differs from run to run", "[log]") {
+  const std::string a = temp_path("run_a.lcmlog"), b = temp_path("run_b.lcmlog");
+  SyntheticRun other;
+  other.run_id = 4711;
+  write_log(a, SyntheticRun());
+  write_log(b, other);
+  CHECK(logger::compare_run_logs(a, b).empty());
+  for (const auto& p : {a, b}) std::remove(p.c_str());
 }

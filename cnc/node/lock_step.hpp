@@ -1,0 +1,76 @@
+#pragma once
+// RIG-6: which answers the CNC takes in lock-step, free of LCM. Every
+// axis_sim and plc_sim answers each cycle; the CNC takes only the answer to
+// the cycle it waits for, and only the first (anything else is refused and
+// counted by the node: a forged or replayed higher cycle must not satisfy
+// every cycle after it). A participant that has not answered when the
+// watchdog fires is lost: the channel stops and the run goes on without
+// waiting for it. The logger answers no cycle; its heartbeat must not fall
+// silent for longer than its timeout.
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cycle_loop.hpp"
+#include "hli.hpp"
+#include "machine_config.hpp"
+
+namespace hil::cnc_node {
+
+class LockStep {
+ public:
+  // An axis_sim per axis of `machine`; `watch_logger`: a logger takes part.
+  LockStep(const MachineConfig& machine, bool watch_logger, int64_t answer_timeout_ms, int64_t logger_timeout_ms);
+
+  // Waits for the answers to `cycle` from now on.
+  void begin(int64_t cycle);
+  // An answer; false (refused) unless it answers the cycle waited for, first.
+  bool take_axis(size_t axis, int64_t cycle, int32_t errors);
+  bool take_plc(int64_t cycle, const HliControl& control);
+  // Every participant not lost has answered the cycle.
+  bool complete() const;
+  // The watchdog fired: whoever has not answered is lost.
+  void lose_silent();
+
+  // The logger's heartbeat was received at `wall_us`.
+  void logger_alive(int64_t wall_us) { logger_heard_us_ = std::max(logger_heard_us_, wall_us); }
+  // At `now_us`: a logger silent for longer than its timeout is lost.
+  void check_logger(int64_t now_us);
+
+  struct Taken {
+    std::optional<HliControl> control;     // the PLC's answer, none if lost
+    std::vector<int32_t> axis_errors;      // MONITOR_* bits per axis, 0 if lost
+    std::vector<cnc::LostParticipant> lost;  // lost in this cycle
+  };
+  // What the cycle brought (call once, when complete).
+  Taken take();
+
+  // Everyone lost so far and the cycle it was lost in, for the RUN_END.
+  const std::vector<std::pair<std::string, int64_t>>& lost() const { return lost_so_far_; }
+
+ private:
+  struct Answerer {
+    std::string name;
+    std::string axis;
+    bool answered = false;
+    bool lost = false;
+    int32_t errors = 0;
+  };
+  void lose(Answerer& who, const std::string& what);
+
+  std::vector<Answerer> axes_;
+  Answerer plc_{"plc_sim", ""};
+  Answerer logger_{"logger", ""};
+  bool watch_logger_;
+  int64_t answer_timeout_ms_, logger_timeout_ms_;
+  int64_t cycle_ = -1;
+  int64_t logger_heard_us_ = 0;
+  std::optional<HliControl> control_;
+  std::vector<cnc::LostParticipant> newly_lost_;
+  std::vector<std::pair<std::string, int64_t>> lost_so_far_;
+};
+
+}  // namespace hil::cnc_node

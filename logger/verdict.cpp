@@ -1,0 +1,103 @@
+#include "verdict.hpp"
+
+#include <algorithm>
+
+namespace hil::logger {
+namespace {
+
+std::string list(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+// Each cycle 0 .. last once on a lock-step channel.
+void check_cycles(const std::string& channel, const std::vector<int64_t>& cycles, int64_t last,
+                  std::vector<std::string>& problems) {
+  std::vector<bool> seen(static_cast<size_t>(last + 1), false);
+  int64_t wrong = 0, first_missing = -1, missing = 0;
+  for (const int64_t c : cycles) {
+    if (c < 0 || c > last || seen[static_cast<size_t>(c)]) ++wrong;
+    else seen[static_cast<size_t>(c)] = true;
+  }
+  for (int64_t c = 0; c <= last; ++c)
+    if (!seen[static_cast<size_t>(c)]) {
+      if (first_missing < 0) first_missing = c;
+      ++missing;
+    }
+  if (missing > 0)
+    problems.push_back(channel + ": " + std::to_string(missing) + " of " + std::to_string(last + 1) +
+                       " cycles missing (the first: " + std::to_string(first_missing) + ")");
+  if (wrong > 0)
+    problems.push_back(channel + ": " + std::to_string(wrong) + " message(s) of a wrong cycle (repeated, or outside 0.." +
+                       std::to_string(last) + ")");
+}
+
+}  // namespace
+
+std::vector<std::string> log_problems(const LogFacts& f) {
+  std::vector<std::string> p;
+  if (!f.manifest) p.push_back("no manifest of the run (HIL_MANIFEST)");
+  if (f.manifest && !f.scenario) p.push_back("no scenario (HIL_SCENARIO): the logger did not write it");
+  if (!f.sealed) p.push_back("the logger did not close the log (no HIL_LOG_END): it was cut short");
+  if (!f.end_cycle) p.push_back("no RUN_END from the cnc");
+  for (const auto& [name, cycle] : f.lost)
+    p.push_back(name + " went silent: the cnc lost it at cycle " + std::to_string(cycle));
+  std::vector<std::string> no_end;
+  for (const auto& name : f.participants)
+    if (!f.ended.count(name) && !f.lost.count(name) && name != "cnc") no_end.push_back(name);
+  if (!no_end.empty()) p.push_back("no RUN_END from " + list(no_end));
+  if (f.sealed && !f.logger_missing.empty()) p.push_back("the logger stopped waiting for " + list(f.logger_missing));
+  if (f.logger_socket_drops > 0)
+    p.push_back("the kernel dropped " + std::to_string(f.logger_socket_drops) +
+                " datagram(s) at the logger's socket (its receive buffer was full)");
+  if (f.end_cycle)
+    for (const auto& [channel, cycles] : f.lock_step) check_cycles(channel, cycles, *f.end_cycle, p);
+  for (const auto& [who, ledger] : f.refused)
+    if (ledger.fails_run())
+      p.push_back((who == "log" ? "in the log" : who + " refused") + std::string(" messages of this run or unreadable: ") +
+                  ledger.describe());
+  const int verdicts = f.verdict_pass + f.verdict_fail;
+  if (f.verdicts_announced && *f.verdicts_announced != verdicts)
+    p.push_back("the log holds " + std::to_string(verdicts) + " verdict event(s), plc_sim published " +
+                std::to_string(*f.verdicts_announced));
+  if (f.expectations >= 0 && verdicts < f.expectations)
+    p.push_back("the scenario has " + std::to_string(f.expectations) + " expectation(s), the log holds " +
+                std::to_string(verdicts) + " verdict(s)");
+  return p;
+}
+
+RunVerdict judge_run(const std::vector<ProcessExit>& exits, const LogFacts& facts, const std::string& check_failure) {
+  RunVerdict v;
+  for (const ProcessExit& e : exits)
+    if (!e.status) v.reasons.push_back(e.name + " hung and was killed");
+    else if (*e.status != 0) v.reasons.push_back(e.name + " exited with status " + std::to_string(*e.status));
+  for (const std::string& problem : log_problems(facts)) v.reasons.push_back("log: " + problem);
+  if (facts.verdict_fail > 0) v.reasons.push_back(std::to_string(facts.verdict_fail) + " expectation(s) failed");
+  if (!check_failure.empty()) v.reasons.push_back("offline check: " + check_failure);
+  v.passed = v.reasons.empty();
+  return v;
+}
+
+std::string describe_refused(const LogFacts& facts) {
+  std::string out;
+  for (const auto& [who, ledger] : facts.refused)
+    if (!ledger.empty()) out += (out.empty() ? "" : "\n  ") + who + ": " + ledger.describe();
+  return out.empty() ? "none" : "\n  " + out;
+}
+
+void Attendance::ended(const std::string& name, int64_t cycle, const std::vector<std::string>& lost) {
+  ended_.insert(name);
+  if (name != "cnc") return;
+  end_cycle_ = cycle;
+  lost_.insert(lost.begin(), lost.end());
+}
+
+std::vector<std::string> Attendance::missing() const {
+  std::vector<std::string> out;
+  for (const auto& name : expected_)
+    if (!ended_.count(name) && !lost_.count(name)) out.push_back(name);
+  return out;
+}
+
+}  // namespace hil::logger
