@@ -74,8 +74,9 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
     // found nothing before it, DDTG-6): on along k from there.
     const size_t k = cursors_.last_finished;
     if (blocks_[k].has_motion) {
-      PathSegment rest(motion_from(blocks_[k].motion, setpoint_positions()), machine_);
-      if (rest.length() > shortest_rest_mm) look_ahead_.push(k, std::move(rest), blocks_[k].slope);
+      const Motion rest = motion_from(blocks_[k].motion, setpoint_positions());
+      if (PathSegment(rest, machine_).length() > shortest_rest_mm)
+        look_ahead_.push(k, rest, blocks_[k].slope, false, corner_after(blocks_[k]));
     }
     cursors_.next_to_look_ahead = k + 1;
     refill();
@@ -100,7 +101,8 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   // The front segment ends where block k ends in the old direction, so the
   // way back over block k is what it had covered before the front and on it.
   const double back_over_k = PathSegment(blocks_[k].motion, machine_).length() - stop.front_length + stop.s;
-  if (back_over_k > shortest_rest_mm) look_ahead_.push(k, PathSegment(motion, machine_), blocks_[k].slope);
+  if (back_over_k > shortest_rest_mm)
+    look_ahead_.push(k, motion, blocks_[k].slope, false, backward ? corner_below(k) : corner_after(blocks_[k]));
   cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
   refill();
   return true;
@@ -127,25 +129,41 @@ void PathInterpolator::refill_forward() {
     PathSegment segment(block.motion, machine_);
     if (!finite(segment)) {
       invalid_block_ = next;
+      look_ahead_.flush();
       return;
     }
-    look_ahead_.push(next, std::move(segment), block.slope, stop_before);
+    look_ahead_.push(next, block.motion, block.slope, stop_before, corner_after(block));
   }
+  if (next >= blocks_.size()) look_ahead_.flush();
 }
 
 void PathInterpolator::refill_backward() {
   while (!look_ahead_.full() && cursors_.next_backward > cursors_.lowest_stored) {
     const size_t i = --cursors_.next_backward;
     if (!blocks_[i].has_motion) continue;
-    look_ahead_.push(i, PathSegment(reversed(blocks_[i].motion), machine_), blocks_[i].slope);
+    look_ahead_.push(i, reversed(blocks_[i].motion), blocks_[i].slope, false, corner_below(i));
   }
+  if (cursors_.next_backward <= cursors_.lowest_stored) look_ahead_.flush();
+}
+
+// Backward (KRN-5, KRN-6): the path leaves block i into the motion block
+// below it through the corner at that block's end, contoured as forward
+// unless something between stops the path there.
+Corner PathInterpolator::corner_below(size_t i) const {
+  for (size_t k = i; k-- > cursors_.lowest_stored;) {
+    if (blocks_[k + 1].stops_path()) return {};
+    if (blocks_[k].has_motion) return corner_after(blocks_[k]);
+  }
+  return {};
 }
 
 void PathInterpolator::begin_front(const MotionState& state, double t0) {
   const size_t index = look_ahead_.front().block_index;
   run_blocks_without_motion(index);
   const bool first_time = direction_ == TravelDirection::forward && index >= cursors_.begun;
-  observer_.reach_block(blocks_[index], first_time);  // its M functions go out before its motion (MVS_SVS)
+  // Once per block, at its first piece (contoured blocks are several, KRN-6).
+  if (look_ahead_.front().begins_block)
+    observer_.reach_block(blocks_[index], first_time);  // its M functions go out before its motion (MVS_SVS)
   if (first_time) cursors_.begun = index + 1;
   plan(state, t0);
 }
@@ -190,7 +208,7 @@ bool PathInterpolator::at_stop(double t) const {
 void PathInterpolator::finish_front() {
   const LookAheadBlock& front = look_ahead_.front();
   observer_.travelled(direction_sign() * front.segment.covered_distance());
-  observer_.finish_block(front.block_index);
+  if (front.ends_block) observer_.finish_block(front.block_index);
   travelled_before_front_ += front.segment.length();
   if (direction_ == TravelDirection::forward)
     cursors_.next_to_run = std::max(cursors_.next_to_run, front.block_index + 1);

@@ -116,6 +116,7 @@ class PathInterpolator {
   void refill();
   void refill_forward();
   void refill_backward();
+  Corner corner_below(size_t i) const;
   // Makes the look-ahead's front block the one in the interpolator, after
   // reaching the blocks without motion before it, and plans from `state`
   // (path position within the block) at time t0.

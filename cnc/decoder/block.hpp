@@ -29,6 +29,21 @@ enum class DistanceProgStart { on, off, clear };
 // warning 51036).
 enum class ShortCutRestriction : uint8_t { none, not_skippable, channel_initialisation };
 
+// How the path passes from a motion block into the next (KRN-6).
+enum class BlockTransition : uint8_t {
+  standard,    // G260/G359 (initial): corners stop, tangent transitions pass at the corner rule's velocity
+  contour,     // G261 (modal) or G61 (this block): the corner is replaced by a contouring curve
+  exact_stop,  // G360 (modal) or G60 (this block): v = 0 at the block end, also on a straight line
+};
+
+// #CONTOUR MODE [DEV PATH_DEV=..] / [DIST DIST=..] (KRN-6).
+struct ContourMode {
+  enum class Type : uint8_t { dev, dist };
+  Type type = Type::dev;
+  double path_dev = 0.01;  // mm, DEV: largest distance between the programmed corner and the curve
+  double dist = 0;         // mm, DIST: distance of the curve's ends from the corner
+};
+
 // An M function of a line (MVS_SVS), and how far along the path before its
 // line it is to be output (path-related pre-output, P-CHAN-00070), mm.
 struct MFunction {
@@ -59,6 +74,9 @@ struct Block {
   // acknowledged by it before the motion starts (MVS_SVS), in order.
   std::vector<MFunction> m_functions;
   double dwell_s = 0;  // #TIME: the path waits this long, s
+  // How the path leaves this motion block (KRN-6), with the contour mode in force.
+  BlockTransition transition = BlockTransition::standard;
+  ContourMode contour;
 
   // The path stands still where this block is reached: for the PLC's
   // acknowledgement, a dwell, or a channel initialisation.

@@ -21,6 +21,10 @@ struct ModalState {
   SlopeType slope = SlopeType::trapez;
   bool centre_absolute = false;    // G161; G162 (relative to the start) is the initial state
   bool centre_correction = false;  // G165: move the centre onto the circle through start and end; G164 off
+  // G261 / #CONTOUR MODE ON: contour; G360: exact_stop; G260 and G359
+  // end what they name (KRN-6).
+  BlockTransition transition = BlockTransition::standard;
+  ContourMode contour;  // #CONTOUR MODE [..]
 };
 
 struct DecoderState {

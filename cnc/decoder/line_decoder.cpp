@@ -21,6 +21,7 @@ struct BlockWords {
   std::optional<double> i, j;               // arc centre
   std::optional<MotionType> motion;         // G00..G03 of this block
   bool position_preset = false;             // G92: the axis words name the current position
+  std::optional<int> transition;            // G60, G61, G260, G261, G359 or G360 (KRN-6)
 };
 
 int axis_of(const Word& w, const MachineConfig& machine) {
@@ -43,6 +44,16 @@ void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
     modal.centre_absolute = g == 161;
   } else if (g == 164 || g == 165) {
     modal.centre_correction = g == 165;
+  } else if (g == 60 || g == 61 || g == 260 || g == 261 || g == 359 || g == 360) {
+    if (programmed.transition)
+      throw LineError{"G" + std::to_string(*programmed.transition) + " and '" + w.text +
+                          "': two block transition G functions in one block",
+                      20117};
+    programmed.transition = g;
+    if (g == 261) modal.transition = BlockTransition::contour;
+    if (g == 360) modal.transition = BlockTransition::exact_stop;
+    if (g == 260 && modal.transition == BlockTransition::contour) modal.transition = BlockTransition::standard;
+    if (g == 359 && modal.transition == BlockTransition::exact_stop) modal.transition = BlockTransition::standard;
   } else {
     throw LineError{"G code '" + w.text + "' is not supported yet"};
   }
@@ -124,6 +135,11 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
   m.start = state.position;
   m.end = target;
   block.slope = modal.slope;
+  // G60 / G61 act on this block's end only (KRN-6).
+  block.transition = programmed.transition == 60   ? BlockTransition::exact_stop
+                     : programmed.transition == 61 ? BlockTransition::contour
+                                                   : modal.transition;
+  block.contour = modal.contour;
   if (m.type != MotionType::rapid) {
     if (!(modal.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
     m.feed = modal.feed;

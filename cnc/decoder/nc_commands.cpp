@@ -174,8 +174,79 @@ void decode_channel_init(const std::string& arguments, DecoderState&, Block& blo
   block.short_cut_restriction = ShortCutRestriction::channel_initialisation;
 }
 
-// A new command is a handler above and one row here; next (KRN-1, KRN-6):
-// #INSERT CMD, #FLUSH, #FLUSH WAIT, #CONTOUR MODE.
+// #CONTOUR MODE [ON|OFF] [<type> <key>=<value> ..] (KRN-6): the parameters
+// of polynomial contouring; ON and OFF are G261 and G260. Types DEV
+// (PATH_DEV) and DIST (DIST); the manual's other types and parameters are
+// refused by name.
+void decode_contour_mode(const std::string& arguments, DecoderState& state, Block&) {
+  std::string rest = arguments;
+  std::optional<BlockTransition> switch_to;
+  if (rest.rfind("ON", 0) == 0 && (rest.size() == 2 || rest[2] == ' ' || rest[2] == '[')) {
+    switch_to = BlockTransition::contour;
+    rest = rest.substr(2);
+  } else if (rest == "OFF") {
+    if (state.modal.transition == BlockTransition::contour) state.modal.transition = BlockTransition::standard;
+    return;
+  }
+  rest.erase(0, rest.find_first_not_of(' '));
+  if (rest.empty() && !switch_to) throw LineError{"#CONTOUR MODE needs ON, OFF or [DEV PATH_DEV=..] / [DIST DIST=..]"};
+  ContourMode mode = state.modal.contour;
+  if (!rest.empty()) {
+    if (rest.front() != '[' || rest.back() != ']' || rest.find(']') != rest.size() - 1)
+      throw LineError{"#CONTOUR MODE: parameters go in one [..]"};
+    std::string inner = rest.substr(1, rest.size() - 2);
+    std::replace(inner.begin(), inner.end(), ',', ' ');
+    for (size_t eq; (eq = inner.find(" =")) != std::string::npos;) inner.erase(eq, 1);  // PATH_DEV = 0.1
+    for (size_t eq; (eq = inner.find("= ")) != std::string::npos;) inner.erase(eq + 1, 1);
+    std::vector<std::string> items;
+    for (size_t i = 0; i < inner.size();) {
+      const size_t begin = inner.find_first_not_of(' ', i);
+      if (begin == std::string::npos) break;
+      const size_t end = std::min(inner.find(' ', begin), inner.size());
+      items.push_back(inner.substr(begin, end - begin));
+      i = end;
+    }
+    bool dev_value = false, dist_value = false;
+    for (const std::string& item : items) {
+      const size_t eq = item.find('=');
+      const std::string key = item.substr(0, eq);
+      if (eq == std::string::npos) {
+        if (key == "DEV") mode.type = ContourMode::Type::dev;
+        else if (key == "DIST") mode.type = ContourMode::Type::dist;
+        else if (key == "PTP" || key == "DIST_SOFT" || key == "DIST_MASTER" || key == "DEV_MASTER")
+          throw LineError{"#CONTOUR MODE type " + key + " is not supported (DEV and DIST are)"};
+        else throw LineError{"#CONTOUR MODE: unknown type '" + key + "'"};
+        continue;
+      }
+      double value = 0;
+      try {
+        value = evaluate_expression(item.substr(eq + 1), state.parameters);
+      } catch (const std::invalid_argument& e) {
+        throw LineError{"#CONTOUR MODE " + key + ": " + e.what()};
+      }
+      if (key == "PATH_DEV" || key == "DIST") {
+        if (!(value > 0 && value <= max_length_mm))
+          throw LineError{"#CONTOUR MODE " + key + " must be > 0 and <= " + std::to_string(max_length_mm) + " mm"};
+        (key == "PATH_DEV" ? mode.path_dev : mode.dist) = value;
+        (key == "PATH_DEV" ? dev_value : dist_value) = true;
+      } else if (key == "TRACK_DEV" || key == "RELEASE_DIST" || key == "AX_DEV" || key == "AX_DIST" ||
+                 key == "MAX_ANGLE" || key == "PTP_ANGLE_MIN" || key == "WEIGHT" || key == "SLOPE" ||
+                 key == "TANGENTIAL" || key == "PTP_MAX_DEV" || key == "TRACK_DIST") {
+        throw LineError{"#CONTOUR MODE parameter " + key + " is not supported (PATH_DEV with DEV, DIST with DIST)"};
+      } else {
+        throw LineError{"#CONTOUR MODE: unknown parameter '" + key + "'"};
+      }
+    }
+    if (mode.type == ContourMode::Type::dev && dist_value) throw LineError{"#CONTOUR MODE DEV takes PATH_DEV, not DIST"};
+    if (mode.type == ContourMode::Type::dist && dev_value) throw LineError{"#CONTOUR MODE DIST takes DIST, not PATH_DEV"};
+    if (mode.type == ContourMode::Type::dist && !(mode.dist > 0)) throw LineError{"#CONTOUR MODE DIST needs DIST=.."};
+  }
+  state.modal.contour = mode;
+  if (switch_to) state.modal.transition = *switch_to;
+}
+
+// A new command is a handler above and one row here; next (KRN-1):
+// #INSERT CMD, #FLUSH, #FLUSH WAIT.
 constexpr NcCommand nc_commands[] = {
     {"#DISTANCE PROG START", decode_distance_prog_start},
     {"#SLOPE", decode_slope},
@@ -183,6 +254,7 @@ constexpr NcCommand nc_commands[] = {
     {"#TIME", decode_time},
     {"#CS", decode_coordinate_system},
     {"#CHANNEL INIT", decode_channel_init},
+    {"#CONTOUR MODE", decode_contour_mode},
 };
 
 // None yet: Z[LIFT_START ..], Z[LIFT_END], Z[LIFT ..]

@@ -3,28 +3,44 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bisect.hpp"
+
 namespace hil::cnc {
 namespace {
 // Unit tangents from a decoder's lines differ by this much when collinear.
 constexpr double tangent_round_off = 1e-12;
+// Curvatures of the same circle, or of a contouring curve's end and the
+// path it joins, differ by round-off relative to their size.
+constexpr double curvature_round_off = 1e-9;
+
+double norm(const std::vector<double>& v) {
+  double sum = 0;
+  for (double x : v) sum += x * x;
+  return std::sqrt(sum);
+}
 }  // namespace
+
+double curvature_step_velocity(double dk, double kappa, double j_max, double cycle_s, double v_cap) {
+  const double budget = (1 - curvature_step_jerk_share) * j_max;
+  auto fits = [&](double v) { return v * v * dk / cycle_s + v * v * v * kappa * kappa + 6 * kappa * v * cycle_s * j_max <= budget; };
+  if (fits(v_cap)) return v_cap;
+  return last_fitting(0.0, v_cap, fits);
+}
 
 Junction junction(const PathSegment& before, const PathSegment& after, const MachineConfig& machine) {
   const std::vector<double> t1 = before.tangent(before.length()), t2 = after.tangent(0);
   const std::vector<double> k1 = before.curvature(before.length()), k2 = after.curvature(0);
   Junction j{std::min(before.limits().v, after.limits().v), false};
-  double dk_max = 0;
-  for (size_t i = 0; i < t1.size(); ++i) {
+  for (size_t i = 0; i < t1.size(); ++i)
     if (std::abs(t2[i] - t1[i]) > tangent_round_off) return {0.0, false};
-    dk_max = std::max(dk_max, std::abs(k2[i] - k1[i]));
-  }
+  const double kappa = std::max(norm(k1), norm(k2));
   const double cycle = machine.cycle_time_s();
   for (size_t i = 0; i < t1.size(); ++i) {
     // An axis along the tangent has no share of the curvature but round-off.
     const double dk = std::abs(k2[i] - k1[i]);
-    if (dk <= tangent_round_off * dk_max) continue;
+    if (dk <= curvature_round_off * kappa) continue;
     j.curvature_step = true;
-    j.v_max = std::min(j.v_max, std::sqrt(machine.axes[i].j_max * cycle / (6 * dk)));
+    j.v_max = curvature_step_velocity(dk, kappa, machine.axes[i].j_max, cycle, j.v_max);
   }
   return j;
 }

@@ -20,16 +20,45 @@ double highest_entry_velocity(double v_exit, double distance, double v_cap, cons
   return last_fitting(v_exit, v_cap, [&](double v0) { return covers(v0) <= distance; });
 }
 
-LookAhead::LookAhead(const MachineConfig& machine, size_t capacity) : machine_(machine), capacity_(capacity) {}
+LookAhead::LookAhead(const MachineConfig& machine, size_t capacity)
+    : machine_(machine), builder_(machine), capacity_(capacity) {}
 
 void LookAhead::push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before) {
+  flush();
+  ++programmed_;
+  push_piece({block_index, std::move(segment), slope, stop_before, true, true});
+}
+
+void LookAhead::push(size_t block_index, const Motion& motion, SlopeType slope, bool stop_before, const Corner& out) {
+  ++programmed_;
+  for (PathPiece& piece : builder_.add(block_index, motion, PathSegment(motion, machine_), slope, stop_before, out))
+    push_piece(std::move(piece));
+}
+
+void LookAhead::flush() {
+  for (PathPiece& piece : builder_.flush()) push_piece(std::move(piece));
+}
+
+void LookAhead::pop_front() {
+  if (blocks_.front().ends_block && programmed_ > 0) --programmed_;
+  blocks_.pop_front();
+}
+
+void LookAhead::clear() {
+  blocks_.clear();
+  builder_.clear();
+  programmed_ = 0;
+}
+
+void LookAhead::push_piece(PathPiece piece) {
   double jerk_share = 1;
   if (!blocks_.empty()) {
-    const Junction j = junction(blocks_.back().segment, segment, machine_);
-    blocks_.back().junction_limit = stop_before ? 0.0 : j.v_max;
+    const Junction j = junction(blocks_.back().segment, piece.segment, machine_);
+    blocks_.back().junction_limit = piece.stop_before ? 0.0 : j.v_max;
     if (j.curvature_step) blocks_.back().jerk_share = jerk_share = curvature_step_jerk_share;
   }
-  blocks_.push_back({block_index, std::move(segment), slope, 0.0, jerk_share, 0.0, true});
+  blocks_.push_back({piece.block_index, std::move(piece.segment), piece.slope, 0.0, jerk_share, 0.0, true,
+                     piece.begins_block, piece.ends_block});
   backward_pass(blocks_.size() - 1, true);
 }
 

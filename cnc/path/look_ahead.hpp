@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <deque>
 
+#include "contour_builder.hpp"
 #include "machine_config.hpp"
 #include "path_segment.hpp"
 #include "slope.hpp"
@@ -27,6 +28,9 @@ struct LookAheadBlock {
   // block's acceleration or jerk limit is lower (passed with a = 0), or
   // nothing follows yet: where stretches end.
   bool limiting = true;
+  // A programmed block may be several pieces (polynomial contouring, KRN-6).
+  bool begins_block = true;
+  bool ends_block = true;
 };
 
 // The blocks from the front up to the first limiting transition: planned as
@@ -46,16 +50,24 @@ class LookAhead {
 
   explicit LookAhead(const MachineConfig& machine, size_t capacity = fct_look_ahead_standard);
 
+  // Pieces to plan (a contoured block waits for the next, see ContourBuilder).
   bool empty() const { return blocks_.empty(); }
-  bool full() const { return blocks_.size() >= capacity_; }
+  // Counted in programmed blocks, not pieces.
+  bool full() const { return programmed_ >= capacity_; }
   size_t size() const { return blocks_.size(); }
   const LookAheadBlock& front() const { return blocks_.front(); }
 
   // stop_before: the path must stand still where the block starts (an M
-  // function synchronised before its motion, a dwell).
+  // function synchronised before its motion, a dwell). Taken as it is:
+  // not contoured (the DDTG short cut, DDTG-2; the planner's tests).
   void push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before = false);
-  void pop_front() { blocks_.pop_front(); }
-  void clear() { blocks_.clear(); }
+  // A programmed block, and how the path is to leave it into the next one
+  // pushed (KRN-6: contoured with G261/G61).
+  void push(size_t block_index, const Motion& motion, SlopeType slope, bool stop_before, const Corner& out);
+  // Nothing follows (yet): a block waiting for its successor ends as programmed.
+  void flush();
+  void pop_front();
+  void clear();
 
   // Override times feed hold (0): scales every programmed velocity.
   void set_velocity_factor(double factor);
@@ -80,7 +92,11 @@ class LookAhead {
   // the path still reaches the next limiting transition's v_end.
   double entry_velocity_after(size_t i) const;
 
+  void push_piece(PathPiece piece);
+
   const MachineConfig& machine_;
+  ContourBuilder builder_;
+  size_t programmed_ = 0;  // blocks pushed and not yet popped (the last piece of each)
   size_t capacity_;
   double factor_ = 1;
   std::deque<LookAheadBlock> blocks_;

@@ -19,6 +19,59 @@ PathSegment::PathSegment(const Motion& m, const MachineConfig& machine)
   set_covered_distance(machine);
 }
 
+PathSegment::PathSegment(std::shared_ptr<const ContourCurve> curve, double s_from, double s_to,
+                         double programmed_velocity, double covered_distance, const MachineConfig& machine)
+    : start_(curve->position(s_from)),
+      end_(curve->position(s_to)),
+      unit_(start_.size(), 0.0),
+      length_(s_to - s_from),
+      covered_distance_(covered_distance),
+      curve_(std::move(curve)),
+      s_from_(s_from) {
+  set_contour_limits(machine, programmed_velocity);
+  programmed_velocity_ = std::min(programmed_velocity, limits_.v);
+}
+
+namespace {
+// Limits rounded down onto a grid (steps of 2^(1/16)): neighbouring curves
+// of a polyline of similar chords then share them, and the look-ahead plans
+// through them as one stretch instead of passing each transition with a = 0.
+double on_grid(double value) {
+  if (!(value > 0) || std::isinf(value)) return value;
+  return std::exp2(std::floor(16 * std::log2(value)) / 16);
+}
+}  // namespace
+
+// As on an arc (set_arc_limits), with the curve's own bounds: an axis sees
+// t_i a_t + k_i v² (acceleration) and t_i j_t + 3 k_i v a_t + k_i' v³
+// (jerk). Half the acceleration goes to each term, a third of the jerk to
+// each. |t_i| <= 1 is used for the tangential terms, so that the limits do
+// not change with the direction along a polyline.
+void PathSegment::set_contour_limits(const MachineConfig& machine, double programmed_velocity) {
+  const ContourCurve::AxisBounds b = curve_->bounds(s_from_, s_from_ + length_);
+  // The lowest limits of the axes that move, against the norms of k and
+  // dk/ds (|k_i| <= |k|): the same limits whichever way a polyline turns.
+  double v = inf, a_axis = inf, j_axis = inf;
+  for (size_t i = 0; i < start_.size(); ++i) {
+    if (!(b.tangent[i] > 0) && !(b.curvature[i] > 0)) continue;  // the axis does not move here
+    const AxisConfig& axis = machine.axes[i];
+    v = std::min(v, axis.v_max);
+    a_axis = std::min(a_axis, axis.a_max);
+    j_axis = std::min(j_axis, axis.j_max);
+  }
+  const double k = b.curvature_norm, dk = b.curvature_rate_norm;
+  if (k > 0) v = std::min(v, std::sqrt(a_axis / (2 * k)));
+  if (dk > 0) v = std::min(v, std::cbrt(j_axis / (3 * dk)));
+  v = on_grid(v);
+  // The 3 k v a term at the highest velocity the path can have here: the
+  // feed at the highest override, or the curve's own limit.
+  const double v_drive = std::min(v, programmed_velocity * machine.override_max_percent / 100.0);
+  double a = a_axis / 2;
+  if (k > 0) a = std::min(a, j_axis / (9 * k * v_drive));
+  limits_ = {v, on_grid(a), j_axis / 3};
+  planar_ = 0;
+}
+
 void PathSegment::set_covered_distance(const MachineConfig& machine) {
   double main_sq = 0, leading_time = 0, leading_travel = 0;
   for (size_t i = 0; i < start_.size(); ++i) {
@@ -101,6 +154,7 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
 }
 
 std::vector<double> PathSegment::position(double s) const {
+  if (curve_) return curve_->position(s_from_ + s);
   std::vector<double> p(start_.size());
   for (size_t i = 0; i < p.size(); ++i) p[i] = start_[i] + unit_[i] * s;
   if (arc_) {
@@ -115,6 +169,7 @@ std::vector<double> PathSegment::position(double s) const {
 }
 
 std::vector<double> PathSegment::tangent(double s) const {
+  if (curve_) return curve_->tangent(s_from_ + s);
   std::vector<double> t = unit_;
   if (arc_) {
     const double angle = angle_at(s);
@@ -125,6 +180,7 @@ std::vector<double> PathSegment::tangent(double s) const {
 }
 
 std::vector<double> PathSegment::curvature(double s) const {
+  if (curve_) return curve_->curvature(s_from_ + s);
   std::vector<double> k(start_.size(), 0.0);
   if (arc_) {
     const double angle = angle_at(s);

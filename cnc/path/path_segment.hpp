@@ -3,9 +3,11 @@
 // its path length s, and the path limits (velocity, acceleration, jerk)
 // under which every axis stays within its own limits (KRN-3).
 // Path positions s run from 0 at the start to length() at the end.
+#include <memory>
 #include <vector>
 
 #include "block.hpp"
+#include "contour_curve.hpp"
 #include "machine_config.hpp"
 #include "slope.hpp"
 
@@ -14,6 +16,11 @@ namespace hil::cnc {
 class PathSegment {
  public:
   PathSegment(const Motion& motion, const MachineConfig& machine);
+  // A part [s_from, s_to] of a contouring curve (KRN-6), driven at most at
+  // `programmed_velocity`, covering `covered_distance` of the programmed
+  // blocks (DPS-1).
+  PathSegment(std::shared_ptr<const ContourCurve> curve, double s_from, double s_to, double programmed_velocity,
+              double covered_distance, const MachineConfig& machine);
 
   double length() const { return length_; }
   // Dynamic limits of the path from the axes' limits (G00: v from the rapid
@@ -25,6 +32,9 @@ class PathSegment {
   // path length over the main axes X Y Z; without main axis motion, the
   // travel of the axis that moves at its dynamic limit.
   double covered_distance() const { return covered_distance_; }
+  // A part of a programmed block covers its share of it (KRN-6).
+  void set_covered_distance(double distance) { covered_distance_ = distance; }
+  bool is_contour_curve() const { return curve_ != nullptr; }
   const std::vector<double>& end() const { return end_; }
 
   // Axis positions at path length s; first and second derivatives by s.
@@ -37,6 +47,7 @@ class PathSegment {
   void set_line_limits(const Motion& motion, const MachineConfig& machine);
   void set_arc_limits(const Motion& motion, const MachineConfig& machine);
   void set_covered_distance(const MachineConfig& machine);
+  void set_contour_limits(const MachineConfig& machine, double programmed_velocity);
 
   bool arc_ = false;
   std::vector<double> start_, end_, unit_;  // unit_: d(axis)/ds of the linear axes
@@ -48,6 +59,8 @@ class PathSegment {
   double programmed_velocity_ = 0;
   double covered_distance_ = 0;
   Limits limits_;
+  std::shared_ptr<const ContourCurve> curve_;  // a contouring curve's part from s_from_
+  double s_from_ = 0;
 };
 
 }  // namespace hil::cnc

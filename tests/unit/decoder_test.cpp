@@ -375,10 +375,10 @@ TEST_CASE("KRN-1 KRN-2 decoder: a command is its whole keyword; others are refus
   check_refused_as_line_3("N30 #TIMEX 5", "command '#TIMEX' is not supported yet");
   check_refused_as_line_3("N30 #DEL DIST2GOX", "command '#DEL' is not supported yet");
   check_refused_as_line_3("N30 #foo [1]", "command '#FOO' is not supported yet");
-  // Not in the table yet (KRN-1, KRN-6).
+  // Not in the table yet (KRN-1).
   check_refused_as_line_3("N30 #FLUSH WAIT", "command '#FLUSH' is not supported yet");
   check_refused_as_line_3("N30 #INSERT CMD", "command '#INSERT' is not supported yet");
-  check_refused_as_line_3("N30 #CONTOUR MODE [DEV PATH_DEV=0.1]", "command '#CONTOUR' is not supported yet");
+  check_refused_as_line_3("N30 #CONTOUR MODEX [DEV PATH_DEV=0.1]", "command '#CONTOUR' is not supported yet");
 }
 
 TEST_CASE("KRN-1 KRN-2 decoder: axis commands <axis>[KEYWORD ...] are refused naming the keyword", "[decoder]") {

@@ -1,0 +1,213 @@
+#include "contour_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "motion_parts.hpp"
+
+namespace hil::cnc {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+// A corner sharper than this (a reversal) keeps its stop: the curve would
+// need a cusp.
+const double cos_sharpest = std::cos(170.0 * M_PI / 180.0);
+// Shorter corner distances are not worth a curve (and a shorter rest of
+// a block is no piece: an arc of it could not be told from a full circle).
+constexpr double shortest_mm = 1e-6;
+// Share of a block between two curves that is absorbed into them.
+constexpr double absorbed_share = 1e-3;
+// Largest value of the quintic Hermite basis functions of the end second
+// derivatives, u²(1-u)³/2 at u = 2/5: a change dk of an end curvature moves
+// the curve by at most this * L² * dk.
+constexpr double curvature_basis_max = 0.01728;
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
+  return sum;
+}
+double distance(const std::vector<double>& a, const std::vector<double>& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(sum);
+}
+double norm(const std::vector<double>& v) { return std::sqrt(dot(v, v)); }
+
+// Something to contour: a tangent break, or a curvature step (KRN-6,
+// thresholds as in the corner rule).
+bool needs_curve(const PathSegment& a, const PathSegment& b) {
+  const std::vector<double> t1 = a.tangent(a.length()), t2 = b.tangent(0);
+  for (size_t i = 0; i < t1.size(); ++i)
+    if (std::abs(t2[i] - t1[i]) > 1e-12) return true;
+  const std::vector<double> k1 = a.curvature(a.length()), k2 = b.curvature(0);
+  const double kappa = std::max(norm(k1), norm(k2));
+  for (size_t i = 0; i < k1.size(); ++i)
+    if (std::abs(k2[i] - k1[i]) > 1e-9 * kappa) return true;
+  return false;
+}
+
+// Largest end curvature a curve of chord L may get later and stay within
+// PATH_DEV: a quarter of it per end.
+double kappa_cap(const Corner& corner, double chord) {
+  if (corner.mode.type != ContourMode::Type::dev) return inf;
+  return corner.mode.path_dev / (4 * curvature_basis_max * chord * chord);
+}
+
+}  // namespace
+
+double ContourBuilder::dev_distance(double path_dev, const std::vector<double>& t1, const std::vector<double>& t2) {
+  const double cos_theta = std::clamp(dot(t1, t2), -1.0, 1.0);
+  const double c = std::sqrt((1 + cos_theta) / 2), s = std::sqrt((1 - cos_theta) / 2);
+  if (!(s > 1e-12)) return inf;
+  return (path_dev / 2) * 16 / ((16 - 10 * c) * s);
+}
+
+double ContourBuilder::corner_distance(const Open& a, const PathSegment& b, const Corner& corner,
+                                       double d_max) const {
+  if (!needs_curve(a.full, b)) return 0;
+  const double len = a.full.length();
+  const std::vector<double> t1 = a.full.tangent(len), t2 = b.tangent(0);
+  if (dot(t1, t2) < cos_sharpest) return 0;
+  const bool dev = corner.mode.type == ContourMode::Type::dev;
+  double d = std::min(d_max, dev ? dev_distance(corner.mode.path_dev, t1, t2) : corner.mode.dist);
+  if (!dev) return d >= shortest_mm ? d : 0;
+  // With arcs (and as a check for lines): shrink until the curve with the
+  // ends' own curvatures passes within half of PATH_DEV.
+  const std::vector<double> programmed_corner = a.full.end();
+  for (int attempt = 0; attempt < 60 && d >= shortest_mm; ++attempt) {
+    const ContourCurve curve({a.full.position(len - d), a.full.tangent(len - d), a.full.curvature(len - d)},
+                             {b.position(d), b.tangent(d), b.curvature(d)});
+    if (curve.distance_to(programmed_corner) <= corner.mode.path_dev / 2) return d;
+    d *= 0.7;
+  }
+  return 0;
+}
+
+PathSegment ContourBuilder::piece_of(const Open& block, double s_from, double s_to) const {
+  const double len = block.full.length();
+  if (s_from <= 0 && s_to >= len) return block.full;
+  Motion m = block.motion;
+  if (s_to < len) m = motion_until(m, block.full.position(s_to));
+  if (s_from > 0) m = motion_from(m, block.full.position(s_from));
+  return PathSegment(m, machine_);
+}
+
+void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<PathPiece>& out) {
+  PendingCurve& p = *pending_;
+  Open& a = *open_;  // the block after the corner
+  auto curve = std::make_shared<const ContourCurve>(p.start,
+                                                    ContourCurve::End{p.end.point, p.end.tangent, end_curvature});
+  const double half = curve->length() / 2, len = a.full.length();
+  PathSegment first(curve, 0, half, p.from_velocity, p.from_covered, machine_);
+  out.push_back({p.from_index, std::move(first), p.from_slope, false, false, true});
+  const double covered = a.full.covered_distance() * a.d_start / len;
+  a.covered_used += covered;
+  PathSegment second(curve, half, curve->length(), a.full.programmed_velocity(), covered, machine_);
+  out.push_back({a.index, std::move(second), a.slope, false, true, false});
+  pending_.reset();
+}
+
+void ContourBuilder::emit_middle(double d_end, std::vector<PathPiece>& out) {
+  Open& a = *open_;
+  const double len = a.full.length();
+  const bool ends = d_end == 0;
+  PathSegment middle = piece_of(a, a.d_start, len - d_end);
+  if (a.d_start > 0 || d_end > 0) {
+    const double covered = ends ? a.full.covered_distance() - a.covered_used
+                                : a.full.covered_distance() * middle.length() / len;
+    middle.set_covered_distance(covered);
+    a.covered_used += covered;
+  }
+  out.push_back({a.index, std::move(middle), a.slope, a.stop_before && a.d_start == 0, a.d_start == 0, ends});
+}
+
+void ContourBuilder::close(std::vector<PathPiece>& out) {
+  Open& a = *open_;
+  if (pending_) emit_curve(a.full.curvature(a.d_start), out);
+  emit_middle(0, out);
+  exact_stop_next_ = a.out.transition == BlockTransition::exact_stop;
+  open_.reset();
+}
+
+std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& motion, PathSegment segment,
+                                           SlopeType slope, bool stop_before, const Corner& out_corner) {
+  std::vector<PathPiece> out;
+  stop_before = stop_before || exact_stop_next_;
+  exact_stop_next_ = false;
+  double d_start = 0;
+  if (open_) {
+    Open& a = *open_;
+    const double len = a.full.length();
+    const double d = stop_before ? 0 : corner_distance(a, segment, a.out, std::min(len, segment.length()) / 2);
+    // Two curves that leave less than this of the block between them meet
+    // (the rest goes to the curve after it): chords of a CAM polyline differ
+    // in length by their rounding, and a micro-line between two curves would
+    // bring back curvature 0 there.
+    const bool vanished = d > 0 && a.d_start > 0 && len - a.d_start - d < absorbed_share * len + shortest_mm;
+    std::vector<double> start_k = a.full.curvature(len - d);
+    std::vector<double> start_point = a.full.position(len - d), start_t = a.full.tangent(len - d);
+    if (vanished) {
+      start_point = a.full.position(a.d_start);
+      start_t = a.full.tangent(a.d_start);
+      start_k = a.full.curvature(a.d_start);
+      if (!a.full.is_contour_curve() && a.motion.type != MotionType::arc_cw && a.motion.type != MotionType::arc_ccw) {
+        // The bend of the polyline around the line, across its joint.
+        const PendingCurve& before = *pending_;
+        const std::vector<double> t_a = a.full.tangent(0), t_b = segment.tangent(0);
+        std::vector<double> k(t_a.size());
+        for (size_t i = 0; i < k.size(); ++i)
+          k[i] = ((t_a[i] - before.tangent_before[i]) / ((before.length_before + len) / 2) +
+                  (t_b[i] - t_a[i]) / ((len + segment.length()) / 2)) /
+                 2;
+        const double along = dot(k, t_a);
+        for (size_t i = 0; i < k.size(); ++i) k[i] -= along * t_a[i];
+        const double chord = distance(start_point, segment.position(d));
+        const double cap = std::min(before.kappa_cap, kappa_cap(a.out, chord));
+        const double size = norm(k);
+        if (size > cap)
+          for (double& x : k) x *= cap / size;
+        start_k = k;
+      }
+    }
+    if (pending_) emit_curve(vanished ? start_k : a.full.curvature(a.d_start), out);
+    if (!vanished) emit_middle(d, out);
+    if (d > 0) {
+      PendingCurve p;
+      p.start = {start_point, start_t, start_k};
+      p.end = {segment.position(d), segment.tangent(d), segment.curvature(d)};
+      p.corner = a.full.end();
+      p.from_index = a.index;
+      p.from_slope = a.slope;
+      p.from_velocity = a.full.programmed_velocity();
+      p.from_covered = a.full.covered_distance() - a.covered_used;
+      p.kappa_cap = kappa_cap(a.out, distance(p.start.point, p.end.point));
+      p.d = d;
+      p.tangent_before = a.full.tangent(len);
+      p.length_before = len;
+      pending_ = std::move(p);
+    } else {
+      exact_stop_next_ = false;
+    }
+    open_.reset();
+    d_start = d;
+  }
+  open_ = Open{block_index, motion, std::move(segment), slope, stop_before, d_start, 0.0, out_corner};
+  if (out_corner.transition != BlockTransition::contour) close(out);
+  return out;
+}
+
+std::vector<PathPiece> ContourBuilder::flush() {
+  std::vector<PathPiece> out;
+  if (open_) close(out);
+  return out;
+}
+
+void ContourBuilder::clear() {
+  open_.reset();
+  pending_.reset();
+  exact_stop_next_ = false;
+}
+
+}  // namespace hil::cnc

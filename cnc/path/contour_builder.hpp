@@ -1,0 +1,114 @@
+#pragma once
+// Polynomial contouring (KRN-6): turns programmed motion blocks into the
+// path pieces the look-ahead plans. Where a block transition is to be
+// contoured (G261 / G61, see corner_transition), the corner (or a tangent
+// transition with a curvature step) is replaced by a ContourCurve between
+// a point at distance d before it and one at d after it: d at most half
+// of each block, and for #CONTOUR MODE [DEV PATH_DEV=e] small enough that
+// the curve passes within e of the programmed corner. The curve takes
+// tangent and curvature of the path at both ends.
+//
+// Polylines of short chords (CAM programs): where two curves use up a line
+// between them completely, the line's middle is no longer on the path, and
+// curvature 0 there would make the curvature swing between 0 and twice the
+// polyline's bend at every chord (a jerk of v^3 dk/ds, far beyond any
+// axis). The curves meet there with the bend of the polyline around that
+// line instead (the mean of its two corners' turning per length), so that a
+// circle of chords runs as a smooth circle.
+//
+// A curve is emitted in two halves, the first belongs to the block before
+// the corner, the second to the block after it: block ends stay where the
+// programme has them for the channel (block numbers, DPS-1: a half covers
+// the programmed distance d it replaces, so block-end values are the
+// programmed sums). A block's end is known only once the next block is
+// there: the last contoured block waits in `open_` until then (or flush()).
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "block.hpp"
+#include "machine_config.hpp"
+#include "path_segment.hpp"
+
+namespace hil::cnc {
+
+// How the path is to leave a block into the next motion block.
+struct Corner {
+  BlockTransition transition = BlockTransition::standard;
+  ContourMode mode;
+};
+
+// How the path leaves `block` into the next motion block. The hook for
+// the lift function (TF5200_lift_function.txt: "additional path smoothing
+// (G61/G261) is not possible in the lifting range"): once blocks carry
+// LIFT_START / LIFT_END, those must return an exact transition here.
+inline Corner corner_after(const Block& block) { return {block.transition, block.contour}; }
+
+struct PathPiece {
+  size_t block_index = 0;
+  PathSegment segment;
+  SlopeType slope = SlopeType::trapez;
+  bool stop_before = false;   // v = 0 where it starts
+  bool begins_block = true;   // the block's first piece
+  bool ends_block = true;     // the block's last piece
+};
+
+class ContourBuilder {
+ public:
+  explicit ContourBuilder(const MachineConfig& machine) : machine_(machine) {}
+
+  // The next block; `out` says how the path is to leave it into the block
+  // added after it. `stop_before`: v = 0 at its start. Returns the pieces
+  // that are final now (all of it unless its end is to be contoured).
+  std::vector<PathPiece> add(size_t block_index, const Motion& motion, PathSegment segment, SlopeType slope,
+                             bool stop_before, const Corner& out);
+  // Nothing follows (yet): the open block ends where it is programmed.
+  std::vector<PathPiece> flush();
+  void clear();
+  bool has_open() const { return open_.has_value(); }
+
+  // The corner distance for a corner between tangents t1, t2 (unit):
+  // PATH_DEV with the curve's end curvatures 0 (lines) is reached at
+  // d (16 - 10 cos(θ/2)) sin(θ/2) / 16 from the corner; half of it is
+  // budgeted for that, half for the curvature the ends may get later.
+  static double dev_distance(double path_dev, const std::vector<double>& t1, const std::vector<double>& t2);
+
+ private:
+  struct Open {
+    size_t index = 0;
+    Motion motion;
+    PathSegment full;
+    SlopeType slope = SlopeType::trapez;
+    bool stop_before = false;
+    double d_start = 0;  // taken by the curve before it
+    double covered_used = 0;
+    Corner out;
+  };
+  struct PendingCurve {
+    ContourCurve::End start, end;
+    std::vector<double> corner;
+    size_t from_index = 0;
+    SlopeType from_slope = SlopeType::trapez;
+    double from_velocity = 0, from_covered = 0;
+    double kappa_cap = 0;  // largest curvature the end may get (PATH_DEV)
+    double d = 0;
+    std::vector<double> tangent_before;  // of the block before the corner, at the corner
+    double length_before = 0;
+  };
+
+  // The pending curve with `end_curvature` at its end, as two halves.
+  void emit_curve(std::vector<double> end_curvature, std::vector<PathPiece>& out);
+  // The open block from its start trim to `d_end` before its end.
+  void emit_middle(double d_end, std::vector<PathPiece>& out);
+  void close(std::vector<PathPiece>& out);
+  PathSegment piece_of(const Open& block, double s_from, double s_to) const;
+  double corner_distance(const Open& a, const PathSegment& b, const Corner& corner, double d_max) const;
+
+  const MachineConfig& machine_;
+  std::optional<Open> open_;
+  std::optional<PendingCurve> pending_;
+  bool exact_stop_next_ = false;  // the block closed last ends with an exact stop
+};
+
+}  // namespace hil::cnc

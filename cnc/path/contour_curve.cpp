@@ -1,0 +1,199 @@
+#include "contour_curve.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hil::cnc {
+namespace {
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
+  return sum;
+}
+
+// 5-point Gauss-Legendre on [-1, 1].
+constexpr double gl_x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
+constexpr double gl_w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                            0.2369268850561891};
+// Samples per interval for the bounds, and the margin for what lies between
+// samples (the quantities change smoothly over 1/(intervals*samples) of u).
+constexpr int bound_samples = 192;
+constexpr double bound_margin = 1.1;
+
+}  // namespace
+
+ContourCurve::ContourCurve(const End& start, const End& end) : start_(start), end_(end) {
+  const size_t n = start.point.size();
+  double chord_sq = 0;
+  for (size_t i = 0; i < n; ++i) chord_sq += (end.point[i] - start.point[i]) * (end.point[i] - start.point[i]);
+  const double L = std::sqrt(chord_sq);
+  coefficients_.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    // Bezier control points of the quintic Hermite curve.
+    const double p0 = 0, p5 = end.point[i] - start.point[i];
+    const double p1 = p0 + L * start.tangent[i] / 5;
+    const double p2 = p0 + 2 * L * start.tangent[i] / 5 + L * L * start.curvature[i] / 20;
+    const double p4 = p5 - L * end.tangent[i] / 5;
+    const double p3 = p5 - 2 * L * end.tangent[i] / 5 + L * L * end.curvature[i] / 20;
+    std::array<double, 6>& c = coefficients_[i];
+    c[0] = p0;
+    c[1] = 5 * (p1 - p0);
+    c[2] = 10 * (p2 - 2 * p1 + p0);
+    c[3] = 10 * (p3 - 3 * p2 + 3 * p1 - p0);
+    c[4] = 5 * (p4 - 4 * p3 + 6 * p2 - 4 * p1 + p0);
+    c[5] = p5 - 5 * p4 + 10 * p3 - 10 * p2 + 5 * p1 - p0;
+  }
+  table_s_.resize(intervals + 1, 0.0);
+  for (int k = 0; k < intervals; ++k)
+    table_s_[k + 1] = table_s_[k] + s_between(double(k) / intervals, double(k + 1) / intervals);
+}
+
+std::vector<double> ContourCurve::derivative(double u, int n) const {
+  std::vector<double> d(coefficients_.size());
+  for (size_t i = 0; i < d.size(); ++i) {
+    const std::array<double, 6>& c = coefficients_[i];
+    double sum = 0;
+    for (int p = 5; p >= n; --p) {
+      double factor = 1;
+      for (int q = 0; q < n; ++q) factor *= p - q;
+      sum = sum * u + factor * c[p];
+    }
+    d[i] = sum;
+  }
+  return d;
+}
+
+double ContourCurve::speed(double u) const {
+  double sum = 0;
+  for (const std::array<double, 6>& c : coefficients_) {
+    const double d = c[1] + u * (2 * c[2] + u * (3 * c[3] + u * (4 * c[4] + u * 5 * c[5])));
+    sum += d * d;
+  }
+  return std::sqrt(sum);
+}
+
+double ContourCurve::s_between(double u0, double u1) const {
+  const double half = (u1 - u0) / 2, mid = (u0 + u1) / 2;
+  double sum = 0;
+  for (int k = 0; k < 5; ++k) sum += gl_w[k] * speed(mid + half * gl_x[k]);
+  return sum * half;
+}
+
+double ContourCurve::u_at(double s) const {
+  if (s <= 0) return 0;
+  if (s >= length()) return 1;
+  const size_t k = static_cast<size_t>(std::upper_bound(table_s_.begin(), table_s_.end(), s) - table_s_.begin()) - 1;
+  const double lo = double(k) / intervals, hi = double(k + 1) / intervals;
+  double u = lo + (hi - lo) * (s - table_s_[k]) / (table_s_[k + 1] - table_s_[k]);
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    const double miss = table_s_[k] + s_between(lo, u) - s;
+    const double step = miss / speed(u);
+    u = std::clamp(u - step, lo, hi);
+    if (std::abs(step) < 1e-15) break;
+  }
+  return u;
+}
+
+namespace {
+// Path positions this close to an end are the end: its exact values.
+bool at_start(double s) { return s <= 0; }
+bool at_end(double s, double length) { return s >= length * (1 - 1e-12); }
+}  // namespace
+
+std::vector<double> ContourCurve::position(double s) const {
+  if (at_start(s)) return start_.point;
+  if (at_end(s, length())) return end_.point;
+  std::vector<double> p = derivative(u_at(s), 0);
+  for (size_t i = 0; i < p.size(); ++i) p[i] += start_.point[i];
+  return p;
+}
+
+ContourCurve::Frame ContourCurve::frame(double u) const {
+  const std::vector<double> r = derivative(u, 1), q = derivative(u, 2), w = derivative(u, 3);
+  const double sigma = std::sqrt(dot(r, r));
+  Frame f;
+  const size_t n = r.size();
+  f.t.resize(n);
+  for (size_t i = 0; i < n; ++i) f.t[i] = r[i] / sigma;
+  const double a = dot(q, f.t);
+  std::vector<double> normal(n);  // q - a t
+  for (size_t i = 0; i < n; ++i) normal[i] = q[i] - a * f.t[i];
+  f.k.resize(n);
+  for (size_t i = 0; i < n; ++i) f.k[i] = normal[i] / (sigma * sigma);
+  // d/du of (q - a t) / sigma², then / sigma for d/ds.
+  const double da = dot(w, f.t) + (dot(q, q) - a * a) / sigma;
+  f.dk.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double dnormal = w[i] - da * f.t[i] - a * normal[i] / sigma;
+    f.dk[i] = (dnormal / (sigma * sigma) - 2 * normal[i] * a / (sigma * sigma * sigma)) / sigma;
+  }
+  return f;
+}
+
+std::vector<double> ContourCurve::tangent(double s) const {
+  if (at_start(s)) return start_.tangent;
+  if (at_end(s, length())) return end_.tangent;
+  return frame(u_at(s)).t;
+}
+std::vector<double> ContourCurve::curvature(double s) const {
+  if (at_start(s)) return start_.curvature;
+  if (at_end(s, length())) return end_.curvature;
+  return frame(u_at(s)).k;
+}
+
+ContourCurve::AxisBounds ContourCurve::bounds(double s_from, double s_to) const {
+  const size_t n = coefficients_.size();
+  AxisBounds b{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
+  const double u0 = u_at(s_from), u1 = u_at(s_to);
+  const int samples = std::max(8, static_cast<int>(bound_samples * (u1 - u0)));
+  for (int k = 0; k <= samples; ++k) {
+    const Frame f = frame(u0 + (u1 - u0) * k / samples);
+    b.curvature_norm = std::max(b.curvature_norm, std::sqrt(dot(f.k, f.k)));
+    b.curvature_rate_norm = std::max(b.curvature_rate_norm, std::sqrt(dot(f.dk, f.dk)));
+    for (size_t i = 0; i < n; ++i) {
+      b.tangent[i] = std::max(b.tangent[i], std::abs(f.t[i]));
+      b.curvature[i] = std::max(b.curvature[i], std::abs(f.k[i]));
+      b.curvature_rate[i] = std::max(b.curvature_rate[i], std::abs(f.dk[i]));
+    }
+  }
+  for (size_t i = 0; i < n; ++i) {
+    b.tangent[i] = std::min(1.0, b.tangent[i] * bound_margin);
+    b.curvature[i] *= bound_margin;
+    b.curvature_rate[i] *= bound_margin;
+  }
+  b.curvature_norm *= bound_margin;
+  b.curvature_rate_norm *= bound_margin;
+  return b;
+}
+
+double ContourCurve::distance_to(const std::vector<double>& point) const {
+  auto dist_sq = [&](double u) {
+    double sum = 0;
+    for (size_t i = 0; i < coefficients_.size(); ++i) {
+      const std::array<double, 6>& c = coefficients_[i];
+      const double p = c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * (c[4] + u * c[5]))));
+      const double d = p + start_.point[i] - point[i];
+      sum += d * d;
+    }
+    return sum;
+  };
+  constexpr int samples = 64;
+  int best = 0;
+  double best_d = dist_sq(0);
+  for (int k = 1; k <= samples; ++k)
+    if (const double d = dist_sq(double(k) / samples); d < best_d) {
+      best_d = d;
+      best = k;
+    }
+  // Golden-section refinement around the best sample.
+  double lo = std::max(0.0, (best - 1.0) / samples), hi = std::min(1.0, (best + 1.0) / samples);
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    const double m1 = lo + (hi - lo) * 0.381966, m2 = hi - (hi - lo) * 0.381966;
+    if (dist_sq(m1) < dist_sq(m2)) hi = m2;
+    else lo = m1;
+  }
+  return std::sqrt(std::min(best_d, dist_sq((lo + hi) / 2)));
+}
+
+}  // namespace hil::cnc

@@ -1,0 +1,54 @@
+#pragma once
+// The contouring curve of polynomial contouring (KRN-6): a quintic
+// polynomial from one point to another that takes the position, the unit
+// tangent and the curvature vector (d²x/ds²) of the path at both ends, so
+// that the path stays continuous in tangent and curvature through it.
+// Quintic Hermite form with |dP/du| = L (the chord) at both ends and
+// d²P/du² = L² k there. Evaluated by path length s (0 .. length()).
+#include <array>
+#include <vector>
+
+namespace hil::cnc {
+
+class ContourCurve {
+ public:
+  struct End {
+    std::vector<double> point, tangent, curvature;  // per axis
+  };
+  ContourCurve(const End& start, const End& end);
+
+  double length() const { return table_s_.back(); }
+  std::vector<double> position(double s) const;
+  std::vector<double> tangent(double s) const;
+  std::vector<double> curvature(double s) const;
+
+  // Largest |t_i|, |k_i| and |dk_i/ds| of each axis between s_from and s_to
+  // (sampled densely, with a margin for what lies between the samples).
+  struct AxisBounds {
+    std::vector<double> tangent, curvature, curvature_rate;
+    double curvature_norm = 0, curvature_rate_norm = 0;  // of the vectors k and dk/ds
+  };
+  AxisBounds bounds(double s_from, double s_to) const;
+  // Smallest distance between `point` and the curve.
+  double distance_to(const std::vector<double>& point) const;
+
+ private:
+  static constexpr int intervals = 32;
+  double u_at(double s) const;
+  double speed(double u) const;
+  double s_between(double u0, double u1) const;
+  // Per axis the power-basis coefficients c0 .. c5 of u, relative to the
+  // start point (small numbers: the end tangents come out to round-off of
+  // the curve's size, not of the machine coordinates).
+  std::vector<std::array<double, 6>> coefficients_;
+  End start_, end_;  // what the ends must be, exactly
+  std::vector<double> table_s_;  // s at u = k / intervals
+  // d^n P / du^n at u, per axis.
+  std::vector<double> derivative(double u, int n) const;
+  struct Frame {
+    std::vector<double> t, k, dk;  // tangent, curvature, dk/ds
+  };
+  Frame frame(double u) const;
+};
+
+}  // namespace hil::cnc
