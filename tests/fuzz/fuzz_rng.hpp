@@ -41,7 +41,9 @@ class Rng {
       if (u < weights[i]) return i;
       u -= weights[i];
     }
-    return N - 1;
+    size_t last = N - 1;  // rounding left u at the total: the last one that has a weight
+    while (last > 0 && !(weights[last] > 0)) --last;
+    return last;
   }
 
  private:

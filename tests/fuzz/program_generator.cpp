@@ -19,12 +19,13 @@ const char* to_string(ProgramKind kind) {
     case ProgramKind::arcs: return "arcs";
     case ProgramKind::steps: return "steps";
     case ProgramKind::commands: return "commands";
+    case ProgramKind::contour: return "contour";
   }
   return "?";
 }
 
 std::optional<ProgramKind> parse_program_kind(const std::string& name) {
-  for (ProgramKind kind : all_program_kinds)
+  for (ProgramKind kind : named_program_kinds)
     if (name == to_string(kind)) return kind;
   return std::nullopt;
 }
@@ -78,17 +79,20 @@ constexpr int step_directions[][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}
 
 enum Item {
   long_line, short_line, tiny_line, rapid, steps, arc_random, tangent_chain, full_circle, helix, tiny_arc,
-  g91_section, feed_change, m_alone, m_with_motion, dwell, marker, dps_command, slope, item_count
+  g91_section, feed_change, m_alone, m_with_motion, dwell, marker, dps_command, slope,
+  contour_mode, chord_polyline, near_collinear, item_count
 };
 
 // Weights of the items per program kind (columns in Item order).
 constexpr double weights[][item_count] = {
     //        long short tiny rapid steps arc  chain full helix tinyarc g91 feed m   m+mv dwell mark dps slope
-    /*mixed*/ {2, 2, 1, 1, 1.5, 1.5, 1.5, 0.5, 0.5, 0.5, 1, 1, 0.7, 0.7, 0.5, 0.7, 0.6, 0.5},
-    /*lines*/ {3, 3, 1, 1.5, 1, 0, 0, 0, 0, 0, 1, 1.5, 0, 0, 0, 0, 0, 0},
-    /*arcs*/ {0, 1, 0, 0, 0, 3, 3, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0},
-    /*steps*/ {0, 1, 2, 0, 6, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0},
-    /*commands*/ {1, 2, 0, 0, 0.5, 0.5, 0, 0, 0, 0, 0.3, 0.5, 2, 2, 1.5, 2, 1.5, 0},
+    //        contour-mode chord-polyline near-collinear
+    /*mixed*/ {2, 2, 1, 1, 1.5, 1.5, 1.5, 0.5, 0.5, 0.5, 1, 1, 0.7, 0.7, 0.5, 0.7, 0.6, 0.5, 0, 0, 0},
+    /*lines*/ {3, 3, 1, 1.5, 1, 0, 0, 0, 0, 0, 1, 1.5, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    /*arcs*/ {0, 1, 0, 0, 0, 3, 3, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    /*steps*/ {0, 1, 2, 0, 6, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    /*commands*/ {1, 2, 0, 0, 0.5, 0.5, 0, 0, 0, 0, 0.3, 0.5, 2, 2, 1.5, 2, 1.5, 0, 0, 0, 0},
+    /*contour*/ {1, 2, 1, 0.5, 1.5, 1, 1.5, 0.3, 0.3, 0.3, 0.5, 1, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3, 2.5, 4, 2},
 };
 
 class Generator {
@@ -107,6 +111,10 @@ class Generator {
     out_.lines.push_back("%fuzz" + std::to_string(seed_));
     set_feed(random_feed());
     emit("G90 G01 F" + feed_word_);
+    if (options_.kind == ProgramKind::contour) {
+      contour_switch(true);
+      emit(rng_.chance(0.8) ? "G261" : "#CONTOUR MODE ON");
+    }
     const int items = static_cast<int>(rng_.integer(options_.min_items, options_.max_items));
     for (int i = 0; i < items; ++i) item(pick_item(false));
     if (!absolute_) emit("G90");
@@ -192,6 +200,9 @@ class Generator {
         break;
       }
       case slope: emit(rng_.chance(0.5) ? "#SLOPE[TYPE=SIN2]" : "#SLOPE [TYPE=TRAPEZ]"); break;
+      case contour_mode: contour_switch(false); break;
+      case chord_polyline: polyline(); break;
+      case near_collinear: nearly_straight(); break;
       case item_count: break;
     }
   }
@@ -281,7 +292,8 @@ class Generator {
     Vec step{got[0] - pos_[0], got[1] - pos_[1], got[2] - pos_[2]};
     const double length = norm(step);
     if (length == 0) return false;
-    emit(std::string(g == 0 ? "G00" : "G01") + words + (g == 0 ? "" : feed_words()) + extra_);
+    emit(std::string(g == 0 ? "G00" : "G01") + words + (g == 0 ? "" : feed_words()) + extra_ + transition_next_);
+    transition_next_.clear();
     moved(got, length);
     return true;
   }
@@ -335,7 +347,8 @@ class Generator {
     if (std::abs(r - r_end) > 1e-9 * (1 + r)) return false;
     const double z = got[2] - pos_[2];
     const double planar = r * sweep, length = std::hypot(planar, z);
-    emit(std::string(ccw ? "G03" : "G02") + words + " I" + ti + " J" + tj + feed_words() + extra_);
+    emit(std::string(ccw ? "G03" : "G02") + words + " I" + ti + " J" + tj + feed_words() + extra_ + transition_next_);
+    transition_next_.clear();
     moved(got, length);
     return true;
   }
@@ -427,6 +440,67 @@ class Generator {
     }
   }
 
+  // KRN-6: contour parameters, the modal switches, or G61/G60 on the next
+  // motion line (one block transition G function per block: 20117).
+  void contour_switch(bool parameters_only) {
+    const double dev = rng_.log_uniform(0.0005, 0.5), dist = rng_.log_uniform(0.001, 2);
+    const std::string dev_text = num(std::round(dev * 1e6) / 1e6), dist_text = num(std::round(dist * 1e6) / 1e6);
+    const size_t which = parameters_only ? rng_.pick({3.0, 1.0}) : rng_.pick({2, 1, 1, 1, 1, 1.5, 1, 1, 0.7, 0.7, 1.5, 1});
+    switch (which) {
+      case 0: emit("#CONTOUR MODE [DEV PATH_DEV=" + dev_text + "]"); break;
+      case 1: emit("#CONTOUR MODE [DIST DIST=" + dist_text + "]"); break;
+      case 2: emit("#CONTOUR MODE ON [PATH_DEV=" + dev_text + "]"); break;
+      case 3: emit("#CONTOUR MODE ON"); break;
+      case 4: emit("#CONTOUR MODE OFF"); break;
+      case 5: emit("G261"); break;
+      case 6: emit("G260"); break;
+      case 7: emit("#CONTOUR MODE ON [DEV, PATH_DEV = " + dev_text + "]"); break;
+      case 8: emit("G360"); break;
+      case 9: emit("G359"); break;
+      case 10: transition_next_ = " G61"; break;
+      default: transition_next_ = " G60"; break;
+    }
+  }
+
+  // A CAM-style polyline: chords of a circle (or of a helix), from tiny to
+  // half a millimetre, often at a high feed, now and then ending in a
+  // reversal.
+  void polyline() {
+    const double r = rng_.log_uniform(0.2, 60);
+    const double chord = std::min(rng_.log_uniform(0.001, 0.5), r / 2);
+    const int n = static_cast<int>(rng_.integer(4, 80));
+    const bool ccw = rng_.chance(0.5);
+    const double dz = rng_.chance(0.2) ? rng_.uniform(-0.02, 0.02) : 0.0;
+    if (rng_.chance(0.6)) {
+      set_feed(std::round(rng_.log_uniform(1200, 15000)));
+      feed_on_next_ = true;
+    }
+    const double heading = rng_.uniform(0, 2 * M_PI), side = ccw ? 1 : -1;
+    const double cx = pos_[0] - side * r * std::sin(heading), cy = pos_[1] + side * r * std::cos(heading);
+    const double a0 = std::atan2(pos_[1] - cy, pos_[0] - cx), step = side * 2 * std::asin(chord / (2 * r));
+    for (int k = 1; k <= n; ++k) {
+      const Vec want{cx + r * std::cos(a0 + k * step), cy + r * std::sin(a0 + k * step), pos_[2] + dz};
+      line_to(want, 1);
+    }
+    if (rng_.chance(0.25)) line_by(direction(false), rng_.log_uniform(0.001, 1), 1);  // a corner
+    if (rng_.chance(0.15)) {  // straight back
+      const Vec back{cx + r * std::cos(a0 + (n - 1) * step), cy + r * std::sin(a0 + (n - 1) * step), pos_[2]};
+      line_to(back, 1);
+    }
+  }
+
+  // Lines that turn by a hair (1e-7 .. 1e-2 rad) at each joint.
+  void nearly_straight() {
+    double angle = rng_.uniform(0, 2 * M_PI);
+    const int n = static_cast<int>(rng_.integer(3, 25));
+    const double l = rng_.log_uniform(0.002, 3);
+    for (int k = 0; k < n; ++k) {
+      angle += (rng_.chance(0.5) ? 1 : -1) * rng_.log_uniform(1e-7, 1e-2);
+      line_by({std::cos(angle), std::sin(angle), 0}, rng_.chance(0.8) ? l : rng_.log_uniform(0.002, 3), 1);
+    }
+    if (rng_.chance(0.3)) line_by({-std::cos(angle), -std::sin(angle), 0}, l, 1);  // reversal
+  }
+
   void relative_section() {
     emit(rng_.chance(0.5) ? "G91" : "G91 F" + feed_word_);
     absolute_ = false;
@@ -448,6 +522,7 @@ class Generator {
   std::string feed_word_;
   bool feed_on_next_ = false;  // write F on the next motion line
   std::string extra_;          // words appended to the next motion line (M functions)
+  std::string transition_next_;  // G61 or G60 for the next motion line (KRN-6)
   bool counting_ = true;
   double dps_ = 0;
 };

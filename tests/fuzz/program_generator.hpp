@@ -27,9 +27,17 @@ enum class ProgramKind {
   arcs,      // G02/G03: random, tangent chains (curvature steps), full circles, helices, tiny
   steps,     // short collinear steps with reversals, tiny blocks (the look-ahead's braking)
   commands,  // lines with many M functions, dwells, #DEL DIST2GO markers, #DISTANCE PROG START
+  // KRN-6: #CONTOUR MODE (DEV, DIST, ON/OFF), G261/G260/G61, G60/G360/G359
+  // over polylines of tiny chords, near-collinear joints and reversals, with
+  // the other items now and then. Chosen by name only (--program-kind
+  // contour): the by-seed rotation keeps its five kinds, so that the seeds
+  // of known failures still make the same programs.
+  contour,
 };
 constexpr ProgramKind all_program_kinds[] = {ProgramKind::mixed, ProgramKind::lines, ProgramKind::arcs,
                                              ProgramKind::steps, ProgramKind::commands};
+constexpr ProgramKind named_program_kinds[] = {ProgramKind::mixed, ProgramKind::lines,    ProgramKind::arcs,
+                                               ProgramKind::steps, ProgramKind::commands, ProgramKind::contour};
 const char* to_string(ProgramKind kind);
 std::optional<ProgramKind> parse_program_kind(const std::string& name);
 

@@ -1,0 +1,190 @@
+// Polynomial contouring measured (KRN-6, docs/PERFORMANCE.md): a CAM-style
+// circle of short G01 chords and the demo contour, run through the channel
+// cycle by cycle as the rig does. Prints program time against the ideal
+// (length / feed), the largest distance of the commanded path from the
+// programmed polyline, the offline limit check's maxima and violations, and
+// the planning cost per block. Asserts nothing.
+// Run: build/bin/contour_bench [--chords N] [--path-dev mm] [--csv out.csv]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "channel.hpp"
+#include "limit_check.hpp"
+#include "machine_config.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+
+namespace {
+
+struct Point {
+  double x, y;
+};
+
+double distance_to_segment(Point p, Point a, Point b) {
+  const double dx = b.x - a.x, dy = b.y - a.y, len_sq = dx * dx + dy * dy;
+  double t = len_sq > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len_sq : 0;
+  t = std::clamp(t, 0.0, 1.0);
+  return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
+}
+
+struct Result {
+  double time_s = 0, ideal_s = 0, max_deviation = 0, min_velocity_in_contour = 1e300;
+  double plan_us_per_block = 0;
+  logger::CheckReport check;
+};
+
+// Runs `program`; `polyline`: the programmed XY path from its start (for
+// the deviation), `length`/`feed` the ideal time; the contour part is the
+// time between the first and the last polyline point.
+Result run(const MachineConfig& machine, const std::string& program, const std::vector<Point>& polyline,
+           double length, double feed, size_t blocks, FILE* csv, int64_t first_line = 0) {
+  Result r;
+  Channel channel(machine, program);
+  logger::LimitChecker checker(machine);
+  HliControl control;
+  control.program_start = {true, true};
+  int64_t k = 0, first_moving = -1, last_moving = -1, first_contour = -1;
+  size_t seg = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (; k < 2000000; ++k) {
+    channel.step(k, control);
+    control.program_start.command_w = false;
+    const auto& sp = channel.setpoints();
+    for (size_t i = 0; i < sp.size(); ++i) checker.add_setpoint(static_cast<int>(i), k, sp[i].position);
+    const Point p{sp[0].position, sp[1].position};
+    double v = 0;
+    for (const auto& s : sp) v += s.velocity * s.velocity;
+    v = std::sqrt(v);
+    if (v > 0) {
+      if (first_moving < 0) first_moving = k;
+      last_moving = k;
+    }
+    // nearest segment, searched forward from the last one
+    double best = 1e300;
+    size_t best_seg = seg;
+    for (size_t s = seg; s + 1 < polyline.size() && s < seg + 8; ++s) {
+      const double d = distance_to_segment(p, polyline[s], polyline[s + 1]);
+      if (d < best) {
+        best = d;
+        best_seg = s;
+      }
+    }
+    if (channel.hli().block_count_r >= first_line) seg = best_seg;
+    if (polyline.size() > 1 && channel.hli().block_count_r >= first_line) {
+      if (best > r.max_deviation && std::getenv("HIL_DEBUG_DEV"))
+        std::fprintf(stderr, "k %lld dev %.6f seg %zu p %.6f %.6f line %lld\n", static_cast<long long>(k), best, seg, p.x,
+                     p.y, static_cast<long long>(channel.hli().block_count_r));
+      r.max_deviation = std::max(r.max_deviation, best);
+      if (first_contour < 0) first_contour = k;
+    }
+    if (csv) std::fprintf(csv, "%lld %.9f %.9f %.9f %.6f\n", static_cast<long long>(k), sp[0].position, sp[1].position,
+                          sp.size() > 2 ? sp[2].position : 0.0, v);
+    if (channel.finished()) break;
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // From the first cycle on the contour (or of motion) to the last cycle of motion.
+  r.time_s = (last_moving - (first_contour >= 0 ? first_contour : first_moving) + 1) * machine.cycle_time_s();
+  r.ideal_s = length / feed;
+  r.plan_us_per_block = wall * 1e6 / static_cast<double>(blocks);
+  r.check = checker.finish();
+  return r;
+}
+
+void print(const char* name, const Result& r, double path_dev) {
+  std::printf("%s\n  program time %.3f s, ideal %.3f s: %.3fx\n", name, r.time_s, r.ideal_s, r.time_s / r.ideal_s);
+  std::printf("  largest distance from the programmed polyline %.6f mm (PATH_DEV %.4f mm)\n", r.max_deviation,
+              path_dev);
+  std::printf("  channel cost %.1f us per block (decode, plan, interpolate, check)\n", r.plan_us_per_block);
+  std::printf("  limit check: %zu violations\n", r.check.violations.size());
+  for (const auto& a : r.check.axes)
+    std::printf("    %s: v %.1f/%.0f (%.0f%%)  a %.0f/%.0f (%.0f%%)  j %.0f/%.0f (%.0f%%)\n", a.axis.c_str(), a.cmd_v,
+                a.v_max, 100 * a.cmd_v / a.v_max, a.cmd_a, a.a_max, 100 * a.cmd_a / a.a_max, a.cmd_j, a.j_max,
+                100 * a.cmd_j / a.j_max);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int chords = 10000, decimals = 9;
+  double path_dev = 0.01, radius = 15.9, chord = 0.1;
+  const char* csv_path = nullptr;
+  const char* only = nullptr;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--chords")) chords = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--path-dev")) path_dev = std::atof(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--csv")) csv_path = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--only")) only = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--decimals")) decimals = std::atoi(argv[i + 1]);
+  }
+  const MachineConfig machine =
+      parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyz_machine.yaml"));
+  FILE* csv = csv_path ? std::fopen(csv_path, "w") : nullptr;
+
+  if (!only || !std::strcmp(only, "circle")) {
+    // A circle of radius `radius` as chords of `chord` mm, counter-clockwise from (R, 0).
+    const double step = 2 * std::asin(chord / (2 * radius));
+    for (const bool contour : {false, true}) {
+      if (!contour && chords > 2000) {
+        std::printf("chord circle without G261: every chord an exact stop (%d chords: not run, ~%.0f s)\n", chords,
+                    chords * 0.0416);
+        continue;
+      }
+      std::string program = "%chords\nN1 G90 G00 X" + std::to_string(radius) + " Y0 Z0\n";
+      char line[160];
+      std::snprintf(line, sizeof line, "#CONTOUR MODE [DEV PATH_DEV=%.6g]\n", path_dev);
+      if (contour) program += line;
+      std::vector<Point> polyline{{radius, 0}};
+      for (int c = 1; c <= chords; ++c) {
+        const Point p{radius * std::cos(c * step), radius * std::sin(c * step)};
+        polyline.push_back(p);
+        std::snprintf(line, sizeof line, "%sX%.*f Y%.*f%s\n", c == 1 ? (contour ? "G01 G261 " : "G01 ") : "", decimals,
+                      p.x, decimals, p.y, c == 1 ? " F6000" : "");
+        program += line;
+      }
+      program += "M30\n";
+      const Result r =
+          run(machine, program, polyline, chords * chord, 100.0, chords, contour ? csv : nullptr, contour ? 4 : 3);
+      char name[120];
+      std::snprintf(name, sizeof name, "chord circle R%.1f, %d chords of %.2f mm, %d decimals, F6000%s", radius, chords,
+                    chord, decimals, contour ? ", G261 PATH_DEV" : ", no contouring");
+      print(name, r, path_dev);
+    }
+  }
+  if (!only || !std::strcmp(only, "demo")) {
+    for (const bool contour : {false, true}) {
+      std::string program =
+          "%demo\nN10 G90 G00 X10 Y10 Z5\nN20 G01 Z-2 F600\n";
+      if (contour) program += "#CONTOUR MODE [DEV PATH_DEV=" + std::to_string(path_dev) + "]\nN25 G261\n";
+      program +=
+          "N30 X80 F3000\nN40 G03 X100 Y30 I0 J20\nN50 G01 Y70\nN60 G03 X80 Y90 I-20 J0\nN70 G01 X10\n"
+          "N80 G91 Y-80\nN90 G90 G00 Z10\nN100 X0 Y0\nN110 M30\n";
+      // The contour N30..N80 as a dense polyline (arcs sampled at 0.01 mm).
+      std::vector<Point> polyline{{10, 10}, {80, 10}};
+      for (int i = 1; i <= 3142; ++i) {
+        const double a = -M_PI / 2 + (M_PI / 2) * i / 3142;
+        polyline.push_back({80 + 20 * std::cos(a), 30 + 20 * std::sin(a)});
+      }
+      polyline.push_back({100, 70});
+      for (int i = 1; i <= 3142; ++i) {
+        const double a = (M_PI / 2) * i / 3142;
+        polyline.push_back({80 + 20 * std::cos(a), 70 + 20 * std::sin(a)});
+      }
+      polyline.push_back({10, 90});
+      polyline.push_back({10, 10});
+      const Result r = run(machine, program, {}, 70 + 40 + 70 + 80 + 20 * M_PI, 50.0, 11, nullptr);
+      print(contour ? "demo, G261 from N30" : "demo, no contouring", r, path_dev);
+      (void)polyline;
+    }
+  }
+  if (csv) std::fclose(csv);
+  return 0;
+}
