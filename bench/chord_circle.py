@@ -23,5 +23,5 @@ for c in range(1, a.chords + 1):
     x, y = a.radius * math.cos(c * step), a.radius * math.sin(c * step)
     head = ("G01 G261 " if not a.plain else "G01 ") if c == 1 else ""
     tail = " F6000" if c == 1 else ""
-    print(f"{head}X{x:.6f} Y{y:.6f}{tail}")
+    print(f"{head}X{x:.9f} Y{y:.9f}{tail}")
 print("M30")

@@ -37,6 +37,7 @@ double distance_to_segment(Point p, Point a, Point b) {
 }
 
 struct Result {
+  std::vector<double> joint_min_velocity;  // per watched point: lowest path velocity within 1 mm of it
   double time_s = 0, ideal_s = 0, max_deviation = 0, min_velocity_in_contour = 1e300;
   double plan_us_per_block = 0;
   logger::CheckReport check;
@@ -46,8 +47,10 @@ struct Result {
 // the deviation), `length`/`feed` the ideal time; the contour part is the
 // time between the first and the last polyline point.
 Result run(const MachineConfig& machine, const std::string& program, const std::vector<Point>& polyline,
-           double length, double feed, size_t blocks, FILE* csv, int64_t first_line = 0) {
+           double length, double feed, size_t blocks, FILE* csv, int64_t first_line = 0,
+           const std::vector<Point>& joints = {}) {
   Result r;
+  r.joint_min_velocity.assign(joints.size(), 1e300);
   Channel channel(machine, program);
   logger::LimitChecker checker(machine);
   HliControl control;
@@ -64,6 +67,9 @@ Result run(const MachineConfig& machine, const std::string& program, const std::
     double v = 0;
     for (const auto& s : sp) v += s.velocity * s.velocity;
     v = std::sqrt(v);
+    for (size_t j = 0; j < joints.size(); ++j)
+      if (std::hypot(p.x - joints[j].x, p.y - joints[j].y) < 1.0 && sp[2].position < -1.9)
+        r.joint_min_velocity[j] = std::min(r.joint_min_velocity[j], v);
     if (v > 0) {
       if (first_moving < 0) first_moving = k;
       last_moving = k;
@@ -180,8 +186,12 @@ int main(int argc, char** argv) {
       }
       polyline.push_back({10, 90});
       polyline.push_back({10, 10});
-      const Result r = run(machine, program, {}, 70 + 40 + 70 + 80 + 20 * M_PI, 50.0, 11, nullptr);
+      const Result r = run(machine, program, {}, 70 + 40 + 70 + 80 + 20 * M_PI, 50.0, 11, nullptr, 0,
+                           {{80, 10}, {100, 30}, {100, 70}, {80, 90}});
       print(contour ? "demo, G261 from N30" : "demo, no contouring", r, path_dev);
+      std::printf("  lowest path velocity within 1 mm of the tangent joints (feed 50 mm/s):");
+      for (double v : r.joint_min_velocity) std::printf(" %.2f", v);
+      std::printf(" mm/s\n");
       (void)polyline;
     }
   }

@@ -44,8 +44,18 @@ StopPoint PathInterpolator::leave_front(double t) {
   stop.front_length = front.segment.length();
   stop.s = std::clamp(path_state_at(t).p, 0.0, stop.front_length);
   stop.position = setpoint_positions();
-  if (stop.front_length > 0)
-    observer_.travelled(direction_sign() * front.segment.covered_distance() * stop.s / stop.front_length);
+  double partial = 0;
+  if (stop.front_length > 0) {
+    partial = front.segment.covered_distance() * stop.s / stop.front_length;
+    observer_.travelled(direction_sign() * partial);
+  }
+  // Where the stop lies in block k's programmed distance (DPS-1, KRN-6: a
+  // contoured block is several pieces, and a stop inside a curve is off the
+  // programmed line, so the rest's own geometry would not say it).
+  const double done = front_block_done_ + partial;
+  const double origin = programmed_origin(stop.block);
+  stop_programmed_ = direction_ == TravelDirection::forward ? origin + done : origin - done;
+  front_block_done_ = 0;
   travelled_before_front_ += stop.s;
   look_ahead_.clear();
   return stop;
@@ -84,6 +94,7 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   }
   const StopPoint stop = leave_front(t);
   const size_t k = stop.block;
+  const double at = stop_programmed_;
   direction_ = direction_ == TravelDirection::forward ? TravelDirection::backward : TravelDirection::forward;
   const bool backward = direction_ == TravelDirection::backward;
   // What is left of block k the new way: back to its start, or on to its end.
@@ -98,11 +109,18 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   } else {
     cursors_.next_to_look_ahead = k + 1;
   }
-  // The front segment ends where block k ends in the old direction, so the
-  // way back over block k is what it had covered before the front and on it.
-  const double back_over_k = PathSegment(blocks_[k].motion, machine_).length() - stop.front_length + stop.s;
-  if (back_over_k > shortest_rest_mm)
-    look_ahead_.push(k, motion, blocks_[k].slope, false, backward ? corner_below(k) : corner_after(blocks_[k]));
+  // What is left of block k the new way, from where the stop lies in its
+  // programmed distance (the front piece need not end where block k ends:
+  // contoured blocks are several pieces, KRN-6).
+  const PathSegment whole(blocks_[k].motion, machine_);
+  const double programmed = whole.covered_distance();
+  const double rest = std::clamp(backward ? at : programmed - at, 0.0, programmed);
+  const double back_over_k = programmed > 0 ? whole.length() * rest / programmed : 0.0;
+  if (back_over_k > shortest_rest_mm) {
+    look_ahead_.push(k, motion, blocks_[k].slope, false, backward ? corner_below(k) : corner_after(blocks_[k]), rest);
+    rest_block_ = k;
+    rest_origin_ = at;
+  }
   cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
   refill();
   return true;
@@ -144,6 +162,15 @@ void PathInterpolator::refill_backward() {
     look_ahead_.push(i, reversed(blocks_[i].motion), blocks_[i].slope, false, corner_below(i));
   }
   if (cursors_.next_backward <= cursors_.lowest_stored) look_ahead_.flush();
+}
+
+// Forward coordinate in block k's programmed distance where its pieces in
+// the look-ahead begin: a rest pushed by turn() begins where the path
+// turned, a whole block at its start (forward) or end (backward).
+double PathInterpolator::programmed_origin(size_t k) const {
+  if (rest_block_ == k) return rest_origin_;
+  if (direction_ == TravelDirection::forward) return 0;
+  return PathSegment(blocks_[k].motion, machine_).covered_distance();
 }
 
 // Backward (KRN-5, KRN-6): the path leaves block i into the motion block
@@ -208,7 +235,12 @@ bool PathInterpolator::at_stop(double t) const {
 void PathInterpolator::finish_front() {
   const LookAheadBlock& front = look_ahead_.front();
   observer_.travelled(direction_sign() * front.segment.covered_distance());
-  if (front.ends_block) observer_.finish_block(front.block_index);
+  front_block_done_ += front.segment.covered_distance();
+  if (front.ends_block) {
+    observer_.finish_block(front.block_index);
+    front_block_done_ = 0;
+    if (rest_block_ == front.block_index) rest_block_.reset();
+  }
   travelled_before_front_ += front.segment.length();
   if (direction_ == TravelDirection::forward)
     cursors_.next_to_run = std::max(cursors_.next_to_run, front.block_index + 1);

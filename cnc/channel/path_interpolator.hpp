@@ -117,6 +117,7 @@ class PathInterpolator {
   void refill_forward();
   void refill_backward();
   Corner corner_below(size_t i) const;
+  double programmed_origin(size_t k) const;
   // Makes the look-ahead's front block the one in the interpolator, after
   // reaching the blocks without motion before it, and plans from `state`
   // (path position within the block) at time t0.
@@ -145,6 +146,13 @@ class PathInterpolator {
   std::vector<AxisSetpoint> setpoints_;
   double path_velocity_ = 0;
   double front_covered_ = 0;
+  // DPS-1 across pieces of one block (KRN-6): what the finished pieces of
+  // the front block covered, where the last stop lay in its programmed
+  // distance, and the block whose pieces began there (a rest after a turn).
+  double front_block_done_ = 0;
+  double stop_programmed_ = 0;
+  std::optional<size_t> rest_block_;
+  double rest_origin_ = 0;
 };
 
 }  // namespace hil::cnc

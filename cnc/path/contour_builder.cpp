@@ -99,7 +99,11 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   Open& a = *open_;  // the block after the corner
   auto curve = std::make_shared<const ContourCurve>(p.start,
                                                     ContourCurve::End{p.end.point, p.end.tangent, end_curvature});
-  const double half = curve->length() / 2, len = a.full.length();
+  const double len = a.full.length();
+  // Split where the programmed shares meet, so that both halves count the
+  // same share of programmed distance per path length.
+  const double share_after = a.d_start, share_before = p.d_before;
+  const double half = curve->length() * share_before / (share_before + share_after);
   PathSegment first(curve, 0, half, p.from_velocity, p.from_covered, machine_);
   out.push_back({p.from_index, std::move(first), p.from_slope, false, false, true});
   const double covered = a.full.covered_distance() * a.d_start / len;
@@ -153,16 +157,29 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
       start_t = a.full.tangent(a.d_start);
       start_k = a.full.curvature(a.d_start);
       if (!a.full.is_contour_curve() && a.motion.type != MotionType::arc_cw && a.motion.type != MotionType::arc_ccw) {
-        // The bend of the polyline around the line, across its joint.
+        // The bend of the polyline around the line, across its joint: the
+        // turning per length of its two corners, the smaller where they
+        // turn the same way and 0 where they do not (minmod, so that a sharp
+        // corner next to gentle chords does not bend the gentle side: the
+        // curve would grow longer than the blocks it replaces).
         const PendingCurve& before = *pending_;
         const std::vector<double> t_a = a.full.tangent(0), t_b = segment.tangent(0);
-        std::vector<double> k(t_a.size());
-        for (size_t i = 0; i < k.size(); ++i)
-          k[i] = ((t_a[i] - before.tangent_before[i]) / ((before.length_before + len) / 2) +
-                  (t_b[i] - t_a[i]) / ((len + segment.length()) / 2)) /
-                 2;
-        const double along = dot(k, t_a);
-        for (size_t i = 0; i < k.size(); ++i) k[i] -= along * t_a[i];
+        std::vector<double> c_before(t_a.size()), c_after(t_a.size());
+        for (size_t i = 0; i < t_a.size(); ++i) {
+          c_before[i] = (t_a[i] - before.tangent_before[i]) / ((before.length_before + len) / 2);
+          c_after[i] = (t_b[i] - t_a[i]) / ((len + segment.length()) / 2);
+        }
+        const double along_before = dot(c_before, t_a), along_after = dot(c_after, t_a);
+        for (size_t i = 0; i < t_a.size(); ++i) {
+          c_before[i] -= along_before * t_a[i];
+          c_after[i] -= along_after * t_a[i];
+        }
+        const double nb = norm(c_before), na = norm(c_after), same = dot(c_before, c_after);
+        std::vector<double> k(t_a.size(), 0.0);
+        if (same > 0 && nb > 0 && na > 0) {
+          const std::vector<double>& smaller = nb < na ? c_before : c_after;
+          for (size_t i = 0; i < k.size(); ++i) k[i] = smaller[i] * same / (nb * na);
+        }
         const double chord = distance(start_point, segment.position(d));
         const double cap = std::min(before.kappa_cap, kappa_cap(a.out, chord));
         const double size = norm(k);
@@ -184,6 +201,7 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
       p.from_covered = a.full.covered_distance() - a.covered_used;
       p.kappa_cap = kappa_cap(a.out, distance(p.start.point, p.end.point));
       p.d = d;
+      p.d_before = len - (vanished ? a.d_start : len - d);
       p.tangent_before = a.full.tangent(len);
       p.length_before = len;
       pending_ = std::move(p);

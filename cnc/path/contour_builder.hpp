@@ -93,6 +93,7 @@ class ContourBuilder {
     double from_velocity = 0, from_covered = 0;
     double kappa_cap = 0;  // largest curvature the end may get (PATH_DEV)
     double d = 0;
+    double d_before = 0;  // programmed length it replaces before the corner
     std::vector<double> tangent_before;  // of the block before the corner, at the corner
     double length_before = 0;
   };

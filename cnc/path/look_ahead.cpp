@@ -29,9 +29,12 @@ void LookAhead::push(size_t block_index, PathSegment segment, SlopeType slope, b
   push_piece({block_index, std::move(segment), slope, stop_before, true, true});
 }
 
-void LookAhead::push(size_t block_index, const Motion& motion, SlopeType slope, bool stop_before, const Corner& out) {
+void LookAhead::push(size_t block_index, const Motion& motion, SlopeType slope, bool stop_before, const Corner& out,
+                     std::optional<double> covered) {
   ++programmed_;
-  for (PathPiece& piece : builder_.add(block_index, motion, PathSegment(motion, machine_), slope, stop_before, out))
+  PathSegment segment(motion, machine_);
+  if (covered) segment.set_covered_distance(*covered);
+  for (PathPiece& piece : builder_.add(block_index, motion, std::move(segment), slope, stop_before, out))
     push_piece(std::move(piece));
 }
 

@@ -6,6 +6,7 @@
 // override and feed hold.
 #include <cstddef>
 #include <deque>
+#include <optional>
 
 #include "contour_builder.hpp"
 #include "machine_config.hpp"
@@ -63,7 +64,10 @@ class LookAhead {
   void push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before = false);
   // A programmed block, and how the path is to leave it into the next one
   // pushed (KRN-6: contoured with G261/G61).
-  void push(size_t block_index, const Motion& motion, SlopeType slope, bool stop_before, const Corner& out);
+  // `covered`: the block's distance from program start, if not its own
+  // (the rest of a block after a turn, DPS-1).
+  void push(size_t block_index, const Motion& motion, SlopeType slope, bool stop_before, const Corner& out,
+            std::optional<double> covered = std::nullopt);
   // Nothing follows (yet): a block waiting for its successor ends as programmed.
   void flush();
   void pop_front();

@@ -449,7 +449,7 @@ class Generator {
     switch (which) {
       case 0: emit("#CONTOUR MODE [DEV PATH_DEV=" + dev_text + "]"); break;
       case 1: emit("#CONTOUR MODE [DIST DIST=" + dist_text + "]"); break;
-      case 2: emit("#CONTOUR MODE ON [PATH_DEV=" + dev_text + "]"); break;
+      case 2: emit("#CONTOUR MODE ON [DEV PATH_DEV=" + dev_text + "]"); break;
       case 3: emit("#CONTOUR MODE ON"); break;
       case 4: emit("#CONTOUR MODE OFF"); break;
       case 5: emit("G261"); break;
