@@ -158,10 +158,12 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
       start_k = a.full.curvature(a.d_start);
       if (!a.full.is_contour_curve() && a.motion.type != MotionType::arc_cw && a.motion.type != MotionType::arc_ccw) {
         // The bend of the polyline around the line, across its joint: the
-        // turning per length of its two corners, the smaller where they
-        // turn the same way and 0 where they do not (minmod, so that a sharp
-        // corner next to gentle chords does not bend the gentle side: the
-        // curve would grow longer than the blocks it replaces).
+        // turning per length of its two corners: their mean where they are
+        // alike, the smaller where they turn the same way but differ more
+        // than twofold, and 0 where they do not turn the same way (minmod,
+        // so that a sharp corner next to gentle chords does not bend the
+        // gentle side: the curve would grow longer than the blocks it
+        // replaces).
         const PendingCurve& before = *pending_;
         const std::vector<double> t_a = a.full.tangent(0), t_b = segment.tangent(0);
         std::vector<double> c_before(t_a.size()), c_after(t_a.size());
@@ -177,8 +179,14 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
         const double nb = norm(c_before), na = norm(c_after), same = dot(c_before, c_after);
         std::vector<double> k(t_a.size(), 0.0);
         if (same > 0 && nb > 0 && na > 0) {
-          const std::vector<double>& smaller = nb < na ? c_before : c_after;
-          for (size_t i = 0; i < k.size(); ++i) k[i] = smaller[i] * same / (nb * na);
+          if (std::max(nb, na) <= 2 * std::min(nb, na)) {
+            // Alike (a circle of chords, with the rounding of its points):
+            // their mean, which halves the rounding's noise.
+            for (size_t i = 0; i < k.size(); ++i) k[i] = (c_before[i] + c_after[i]) / 2;
+          } else {
+            const std::vector<double>& smaller = nb < na ? c_before : c_after;
+            for (size_t i = 0; i < k.size(); ++i) k[i] = smaller[i] * same / (nb * na);
+          }
         }
         const double chord = distance(start_point, segment.position(d));
         const double cap = std::min(before.kappa_cap, kappa_cap(a.out, chord));
