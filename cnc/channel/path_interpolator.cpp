@@ -44,6 +44,7 @@ StopPoint PathInterpolator::leave_front(double t) {
   stop.front_length = front.segment.length();
   stop.s = std::clamp(path_state_at(t).p, 0.0, stop.front_length);
   stop.position = setpoint_positions();
+  stop.on_contour_curve = front.segment.is_contour_curve();
   double partial = 0;
   if (stop.front_length > 0) {
     partial = front.segment.covered_distance() * stop.s / stop.front_length;
@@ -98,8 +99,26 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   direction_ = direction_ == TravelDirection::forward ? TravelDirection::backward : TravelDirection::forward;
   const bool backward = direction_ == TravelDirection::backward;
   // What is left of block k the new way: back to its start, or on to its end.
-  const Motion motion = backward ? reversed(motion_until(blocks_[k].motion, stop.position))
-                                 : motion_from(blocks_[k].motion, stop.position);
+  const PathSegment whole(blocks_[k].motion, machine_);
+  const double programmed = whole.covered_distance();
+  const double rest = std::clamp(backward ? at : programmed - at, 0.0, programmed);
+  // From a point on a contouring curve (KRN-6), off the programmed motion:
+  // first straight onto the motion where the stop lies in its programmed
+  // distance, then along the motion (an arc from a point off its circle
+  // would blend its radius, and its setpoints would turn where its tangent
+  // does not). The path stands at the joint (a corner).
+  std::vector<double> from = stop.position;
+  std::optional<PathSegment> connector;
+  if (stop.on_contour_curve && programmed > 0) {
+    from = whole.position(std::clamp(whole.length() * at / programmed, 0.0, whole.length()));
+    Motion line = blocks_[k].motion;
+    if (line.type != MotionType::rapid) line.type = MotionType::linear;
+    line.start = stop.position;
+    line.end = from;
+    connector.emplace(line, machine_);
+  }
+  const Motion motion = backward ? reversed(motion_until(blocks_[k].motion, from))
+                                 : motion_from(blocks_[k].motion, from);
   if (backward) {
     size_t i = cursors_.begun, counted = 0;
     while (i > 0 && counted < stored_blocks)
@@ -109,17 +128,27 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   } else {
     cursors_.next_to_look_ahead = k + 1;
   }
-  // What is left of block k the new way, from where the stop lies in its
-  // programmed distance (the front piece need not end where block k ends:
-  // contoured blocks are several pieces, KRN-6).
-  const PathSegment whole(blocks_[k].motion, machine_);
-  const double programmed = whole.covered_distance();
-  const double rest = std::clamp(backward ? at : programmed - at, 0.0, programmed);
   const double back_over_k = programmed > 0 ? whole.length() * rest / programmed : 0.0;
+  double connector_covered = 0;
+  if (connector && connector->length() > shortest_rest_mm) {
+    connector_covered = std::min(connector->length(), rest);
+    connector->set_covered_distance(connector_covered);
+    look_ahead_.push(k, std::move(*connector), blocks_[k].slope, false, !(back_over_k > shortest_rest_mm));
+  }
   if (back_over_k > shortest_rest_mm) {
-    look_ahead_.push(k, motion, blocks_[k].slope, false, backward ? corner_below(k) : corner_after(blocks_[k]), rest);
+    // Off a curve, the rest counts the programmed remainder (the block-end
+    // value stays the programmed sum); on the motion, its own length, as it
+    // always did (the stop's place in the plan and the setpoint it left
+    // differ by up to a cycle's motion).
+    std::optional<double> covered;
+    if (stop.on_contour_curve) covered = rest - connector_covered;
+    look_ahead_.push(k, motion, blocks_[k].slope, false, backward ? corner_below(k) : corner_after(blocks_[k]),
+                     covered);
     rest_block_ = k;
-    rest_origin_ = at;
+    // Where its pieces begin in the block's programmed distance.
+    rest_origin_ = stop.on_contour_curve ? at
+                   : backward            ? PathSegment(motion, machine_).covered_distance()
+                                         : programmed - PathSegment(motion, machine_).covered_distance();
   }
   cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
   refill();

@@ -47,6 +47,7 @@ struct StopPoint {
   double front_length = 0;  // of the front segment
   double s = 0;             // path position on it
   std::vector<double> position;
+  bool on_contour_curve = false;  // the front piece was a contouring curve (KRN-6): off the programmed motion
 };
 
 enum class PathProgress {
