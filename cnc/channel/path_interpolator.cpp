@@ -45,6 +45,7 @@ StopPoint PathInterpolator::leave_front(double t) {
   stop.s = std::clamp(path_state_at(t).p, 0.0, stop.front_length);
   stop.position = setpoint_positions();
   stop.on_contour_curve = front.segment.is_contour_curve();
+  stop.front_ends_block = front.ends_block && !stop.on_contour_curve;
   double partial = 0;
   if (stop.front_length > 0) {
     partial = front.segment.covered_distance() * stop.s / stop.front_length;
@@ -128,7 +129,13 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   } else {
     cursors_.next_to_look_ahead = k + 1;
   }
-  const double back_over_k = programmed > 0 ? whole.length() * rest / programmed : 0.0;
+  // A front piece that ends where block k ends (every block without
+  // contouring): the way back over block k is what it had covered before
+  // the front and on it, as it always was. Otherwise from the stop's place
+  // in the programmed distance.
+  const double back_over_k = stop.front_ends_block ? whole.length() - stop.front_length + stop.s
+                             : programmed > 0      ? whole.length() * rest / programmed
+                                                   : 0.0;
   double connector_covered = 0;
   if (connector && connector->length() > shortest_rest_mm) {
     connector_covered = std::min(connector->length(), rest);

@@ -48,6 +48,7 @@ struct StopPoint {
   double s = 0;             // path position on it
   std::vector<double> position;
   bool on_contour_curve = false;  // the front piece was a contouring curve (KRN-6): off the programmed motion
+  bool front_ends_block = true;   // the front piece ended where its block ends (in the travel direction)
 };
 
 enum class PathProgress {

@@ -214,3 +214,63 @@ TEST_CASE("KRN-6 without G261 a chord polyline still stops at every corner (toda
   // 20 rest-to-rest moves of 0.1 mm vs. one smooth motion of 2 mm.
   CHECK(plain.moving_cycles > 3 * smooth.moving_cycles);
 }
+
+TEST_CASE("KRN-6 G60 stops at its block's end even on a straight line; G61 contours only its own block's end",
+          "[contour]") {
+  const MachineConfig m = test::xyz_machine();
+  auto lowest_velocity_near = [&](const std::string& program, double x, double y) {
+    Channel channel(m, program);
+    logger::LimitChecker checker(m);
+    double lowest = 1e300;
+    run_program(channel, &checker, [&](int64_t, const HliState& s, HliControl&) {
+      const auto& sp = channel.setpoints();
+      if (s.channel_state == ChannelState::active && std::hypot(sp[0].position - x, sp[1].position - y) < 0.01)
+        lowest = std::min(lowest, std::hypot(sp[0].velocity, sp[1].velocity));
+    });
+    CHECK(checker.finish().violations.empty());
+    return lowest;
+  };
+  // Collinear: passes at the feed; with G60 the path stands at X10.
+  CHECK(lowest_velocity_near("N10 G01 X10 F3000\nN20 X20\nN30 M30\n", 10, 0) > 40);
+  CHECK(lowest_velocity_near("N10 G01 X10 F3000 G60\nN20 X20\nN30 M30\n", 10, 0) == 0);
+  // G360 modal, G359 ends it.
+  CHECK(lowest_velocity_near("N5 G360\nN10 G01 X10 F3000\nN20 X20\nN30 X30\nN40 M30\n", 20, 0) == 0);
+  CHECK(lowest_velocity_near("N5 G360\nN10 G01 X10 F3000\nN20 G359 X20\nN30 X30\nN40 M30\n", 20, 0) > 40);
+  // A corner: stops without contouring; G61 on N10 contours the corner at
+  // X10 but not the one at X10 Y10 (N20 has none).
+  const std::string square = "N10 G01 X10 F3000 G61\nN20 Y10\nN30 X0\nN40 M30\n";
+  CHECK(lowest_velocity_near("N10 G01 X10 F3000\nN20 Y10\nN30 M30\n", 10, 0) == 0);
+  CHECK(lowest_velocity_near(square, 10, 0) > 5);  // passes near the corner, within PATH_DEV
+  CHECK(lowest_velocity_near(square, 10, 10) == 0);
+}
+
+TEST_CASE("KRN-6 DPS-1 contoured blocks end on the programmed sums of dist_prog_start", "[contour]") {
+  const MachineConfig m = test::xyz_machine();
+  // A zigzag polyline with sharp and gentle corners, G261 PATH_DEV = 0.05.
+  const std::string program =
+      "#CONTOUR MODE [DEV PATH_DEV=0.05]\nN10 G01 G261 X10 F6000\nN20 X20 Y1\nN30 X21 Y5\nN40 X21.5 Y5.2\n"
+      "N50 X22 Y5.3\nN60 X30 Y0\nN70 M30\n";
+  const std::vector<std::vector<double>> points{{0, 0}, {10, 0}, {20, 1}, {21, 5}, {21.5, 5.2}, {22, 5.3}, {30, 0}};
+  std::vector<double> sums{0};
+  for (size_t i = 1; i < points.size(); ++i)
+    sums.push_back(sums.back() + std::hypot(points[i][0] - points[i - 1][0], points[i][1] - points[i - 1][1]));
+  Channel channel(m, program);
+  logger::LimitChecker checker(m);
+  std::vector<double> at_change;
+  int64_t last_block = -1;
+  double previous_dps = 0;
+  run_program(channel, &checker, [&](int64_t, const HliState& s, HliControl&) {
+    if (s.block_nr_r != last_block && last_block >= 10) at_change.push_back(previous_dps);
+    last_block = s.block_nr_r;
+    previous_dps = s.dist_prog_start * 1e-4;
+  });
+  CHECK(checker.finish().violations.empty());
+  CHECK(channel.hli().dist_prog_start * 1e-4 == Approx(sums.back()).epsilon(1e-9));
+  // Where the block number changes (the middle of a curve), the count is the
+  // programmed sum up to that block's end, to within the last cycle's way.
+  REQUIRE(at_change.size() >= 5);
+  for (size_t i = 0; i < 5; ++i) {
+    INFO("block end " << i + 1);
+    CHECK(at_change[i] == Approx(sums[i + 1]).margin(0.11));  // <= one cycle at 100 mm/s
+  }
+}
