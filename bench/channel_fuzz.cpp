@@ -99,8 +99,6 @@ int main(int argc, char** argv) {
   app.add_option("--program-kind", kind_name, "all (by seed), mixed, lines, arcs, steps, commands");
   app.add_option("--min-items", options.min_items, "fewest generator items per program")->check(CLI::PositiveNumber);
   app.add_option("--max-items", options.max_items, "most generator items per program")->check(CLI::PositiveNumber);
-  app.add_flag("--avoid-known-bugs", options.avoid_known_channel_bugs,
-               "no delete distance to go edge in backward motion or after 50810 (the unit test's setting)");
   app.add_flag("--quiet-plc", quiet_plc, "no random PLC edges: program start and prompt M acknowledgements only");
   app.add_flag("--print-program", print_program, "print the NC program of every failing run (and of a single run)");
   app.add_flag("--trace", trace, "print every cycle (TSV) of the runs");
@@ -178,9 +176,8 @@ int main(int argc, char** argv) {
     }
     if (show_events)
       for (const std::string& e : run.event_log) std::printf("  event %s\n", e.c_str());
-    std::printf("  reproduce: channel_fuzz --seed %llu --runs 1 --program-kind %s%s%s --print-program\n",
-                static_cast<unsigned long long>(s), to_string(run.kind), quiet_plc ? " --quiet-plc" : "",
-                options.avoid_known_channel_bugs ? " --avoid-known-bugs" : "");
+    std::printf("  reproduce: channel_fuzz --seed %llu --runs 1 --program-kind %s%s --print-program\n",
+                static_cast<unsigned long long>(s), to_string(run.kind), quiet_plc ? " --quiet-plc" : "");
     if (print_program && runs > 1) std::printf("%s", run.program.text.c_str());
     if (shrink) minimize(run, options, !no_fork);
     std::fflush(stdout);

@@ -10,10 +10,6 @@
 namespace hil::cnc {
 namespace {
 
-// A rest shorter than this is not moved (10 nm): a shorter arc could not be
-// told from a full circle.
-constexpr double shortest_rest_mm = 1e-5;
-
 // Numbers the planner can work with: a finite length and finite limits.
 bool finite(const PathSegment& segment) {
   const Limits& lim = segment.limits();
@@ -73,21 +69,21 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
     // It stands in block k (at its start, or where a backward short cut
     // found nothing before it, DDTG-6): on along k from there.
     const size_t k = cursors_.last_finished;
-    if (blocks_[k].has_motion) {
-      PathSegment rest(motion_from(blocks_[k].motion, setpoint_positions()), machine_);
-      if (rest.length() > shortest_rest_mm) look_ahead_.push(k, std::move(rest), blocks_[k].slope);
-    }
+    if (blocks_[k].has_motion)
+      if (const auto rest = rest_of_motion(blocks_[k].motion, setpoint_positions(), false, machine_))
+        look_ahead_.push(k, PathSegment(*rest, machine_), blocks_[k].slope);
     cursors_.next_to_look_ahead = k + 1;
     refill();
     return true;
   }
   const StopPoint stop = leave_front(t);
   const size_t k = stop.block;
+  // The front segment ends where block k ends in the old direction.
+  const double along_k = direction_ == TravelDirection::forward
+                             ? PathSegment(blocks_[k].motion, machine_).length() - stop.front_length + stop.s
+                             : stop.front_length - stop.s;
   direction_ = direction_ == TravelDirection::forward ? TravelDirection::backward : TravelDirection::forward;
   const bool backward = direction_ == TravelDirection::backward;
-  // What is left of block k the new way: back to its start, or on to its end.
-  const Motion motion = backward ? reversed(motion_until(blocks_[k].motion, stop.position))
-                                 : motion_from(blocks_[k].motion, stop.position);
   if (backward) {
     size_t i = cursors_.begun, counted = 0;
     while (i > 0 && counted < stored_blocks)
@@ -97,10 +93,9 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   } else {
     cursors_.next_to_look_ahead = k + 1;
   }
-  // The front segment ends where block k ends in the old direction, so the
-  // way back over block k is what it had covered before the front and on it.
-  const double back_over_k = PathSegment(blocks_[k].motion, machine_).length() - stop.front_length + stop.s;
-  if (back_over_k > shortest_rest_mm) look_ahead_.push(k, PathSegment(motion, machine_), blocks_[k].slope);
+  // What is left of block k the new way: back to its start, or on to its end.
+  if (const auto rest = rest_of_motion(blocks_[k].motion, stop.position, backward, machine_, along_k))
+    look_ahead_.push(k, PathSegment(*rest, machine_), blocks_[k].slope);
   cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
   refill();
   return true;
@@ -224,9 +219,14 @@ PathProgress PathInterpolator::interpolate(double t) {
       break;
     }
     // Go on from where the path left the block: at t, or where a plan that
-    // ended on the block end (a limiting transition) ended.
+    // ended on the block end (a limiting transition) ended. A plan that
+    // stops there (a corner) and is passed a rounding before its end also
+    // ends there: the next block starts at rest after it, instead of taking
+    // the braking's last residual acceleration round the corner (KRN-3:
+    // 40,004 mm/s^3 for a limit of 40,000).
     double t_from = t;
-    if (plan_ended) {
+    const bool stops_on_end = plan_.end().v == 0 && std::abs(plan_.end().p - length) <= 1e-9 * (1 + length);
+    if (plan_ended || stops_on_end) {
       t_from = plan_start_ + plan_.duration();
       path = plan_.end();
     }

@@ -17,7 +17,7 @@ struct Motion {
   std::vector<double> end;    // mm, per machine axis
   double center_x = 0;        // mm, absolute arc centre (G02/G03, XY plane)
   double center_y = 0;
-  double feed = 0;            // mm/s (programmed F is mm/min); 0 for G00
+  double feed = 0;            // mm/s (programmed F is mm/min), the F in force; G00 moves at rapid
 };
 
 // #DISTANCE PROG START ON / OFF (modal) / CLEAR (DPS-2).

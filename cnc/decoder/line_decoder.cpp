@@ -124,10 +124,8 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
   m.start = state.position;
   m.end = target;
   block.slope = modal.slope;
-  if (m.type != MotionType::rapid) {
-    if (!(modal.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
-    m.feed = modal.feed;
-  }
+  if (m.type != MotionType::rapid && !(modal.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
+  m.feed = modal.feed;  // G00 too: a short cut to its end runs at it (DDTG-2)
   if (is_arc) set_arc_centre(m, programmed.i, programmed.j, state);
   state.position = target;
 }

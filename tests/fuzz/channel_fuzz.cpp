@@ -54,13 +54,6 @@ class FuzzPlc {
   }
 
   const PlcCounts& counts() const { return counts_; }
-  // No backward motion toggle within 1 um of where the path entered its
-  // block (start, or end going backward): a turn there drops a rest under
-  // 10 nm (backward_motion.cpp, shortest_rest_mm) and the setpoint jumps.
-  void avoid_turns_at(std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> block_ends) {
-    block_ends_ = std::move(block_ends);
-  }
-
   // The answer to the state of cycle k, applied by step k + 1.
   void answer(int64_t k, const HliState& s, HliControl& c) {
     c.cycle = k;
@@ -111,7 +104,7 @@ class FuzzPlc {
         next_ddtg_ = k + gap(ddtg_mean_);
       }
     }
-    if (chaos && use_backward_ && k >= next_backward_ && !near_entry(s)) {
+    if (chaos && use_backward_ && k >= next_backward_) {
       c.backward_motion = {!c.backward_motion.command_w, rng_.chance(0.95)};
       next_backward_ = k + gap(backward_mean_);
       ++counts_.backward_toggles;
@@ -142,18 +135,6 @@ class FuzzPlc {
 
   int64_t gap(double mean) { return 1 + static_cast<int64_t>(rng_.uniform(0, 2 * mean)); }
 
-  bool near_entry(const HliState& s) const {
-    const auto it = block_ends_.find(s.block_count_r);
-    if (it == block_ends_.end()) return false;
-    const std::vector<double>& entry = s.backward_motion.state_r ? it->second.second : it->second.first;
-    double d2 = 0;
-    for (size_t i = 0; i < entry.size() && i < s.axis_position_r.size(); ++i) {
-      const double d = static_cast<double>(s.axis_position_r[i]) / hli_units_per_mm - entry[i];
-      d2 += d * d;
-    }
-    return d2 < 1e-6;  // 1 um
-  }
-
   Rng rng_;
   int64_t chaos_end_;
   int32_t override_top_ = 1200;
@@ -166,7 +147,6 @@ class FuzzPlc {
   int64_t ddtg_release_ = 0;
   bool release_on_active_ = false;
   int64_t ack_at_ = -1;
-  std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> block_ends_;
   PlcCounts counts_;
 };
 
@@ -294,12 +274,6 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   cnc::Channel channel(machine, program.text);
   logger::LimitChecker checker(machine);
   FuzzPlc plc(mix_seed(seed ^ 0x91c), run.chaos_cycles);
-  if (options.avoid_known_channel_bugs) {
-    std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> ends;
-    for (const cnc::Block& b : cnc::decode_program(program.text, machine, std::vector<double>(machine.axes.size(), 0.0)).blocks)
-      if (b.has_motion) ends[b.block_count] = {b.motion.start, b.motion.end};
-    plc.avoid_turns_at(std::move(ends));
-  }
   HliControl control;
   control.program_start = {true, true};
   control.feedhold.enable_w = true;
@@ -328,7 +302,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       }
       const bool from_plc = e.nc_line == 0 && (e.message.rfind("override ", 0) == 0 ||
                                                e.message.rfind("program start ignored", 0) == 0);
-      if (!from_plc && run.event_log.size() < 16)
+      if (!from_plc && run.event_log.size() < 64)
         run.event_log.push_back("cycle " + std::to_string(k) + ": " + describe(e));
       if (e.severity == Severity::error)
         fail({"event", k, e.axis, "", e.value, e.limit, e.nc_line, "error event: " + describe(e)});

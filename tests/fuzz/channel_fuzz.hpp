@@ -62,16 +62,6 @@ struct FuzzOptions {
   int min_items = 4;
   int max_items = 24;
   bool random_plc = true;  // false: program start and prompt M acknowledgements only
-  // The PLC stays out of the channel's known bug (tests/unit/channel_known_bugs_test.cpp):
-  // a delete distance to go request met by an empty look-ahead while the
-  // channel is active makes Channel::leave_front() read an empty deque. So:
-  // no edge while backward motion is requested or active (the start of the
-  // stored contour, 50810 backward), in the last motion block (its stop
-  // ends where the look-ahead runs empty), nor after a 50810 warning. And
-  // a smaller one: no backward motion toggle within 1 um of where the path
-  // entered its block (a turn there drops a rest under 10 nm: the setpoint
-  // jumps by it, 1,100 mm/s^3 more jerk for 1.1 nm).
-  bool avoid_known_channel_bugs = false;
   // Called after every step (the bench's --trace).
   std::function<void(int64_t cycle, const cnc::Channel& channel, const HliControl& control)> observer;
   // Instead of the generated program, this text (a shrunk one, the bench's

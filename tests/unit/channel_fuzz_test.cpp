@@ -37,12 +37,8 @@ TEST_CASE("KRN-3 DDTG-1 KRN-5 DPS-1 channel fuzz: random programs and PLC edges 
   // commands), each with its random PLC (feed hold, override 0 .. 120 %,
   // delete distance to go with and without activation masks, backward
   // motion, late M acknowledgements), checked as tests/fuzz/channel_fuzz.hpp
-  // says. Left out here, in the bench (build/bin/channel_fuzz) not: delete
-  // distance to go requests that meet an empty look-ahead (backward motion,
-  // the last motion block, after 50810), the channel's known bug
-  // (channel_known_bugs_test.cpp).
+  // says; nothing left out.
   FuzzOptions options;
-  options.avoid_known_channel_bugs = true;
   constexpr int64_t first = 1, runs = 2500;
   int64_t cycles = 0, failed = 0, shown = 0, short_cuts = 0, backward = 0, m_output = 0, random_plc = 0;
   PlcCounts plc;
@@ -63,7 +59,7 @@ TEST_CASE("KRN-3 DDTG-1 KRN-5 DPS-1 channel fuzz: random programs and PLC edges 
     ++failed;
     for (const Failure& f : run.failures)
       if (++shown <= 40) FAIL_CHECK(describe(run, f) << "\n  reproduce: build/bin/channel_fuzz --seed " << seed
-                                                     << " --runs 1 --avoid-known-bugs --print-program");
+                                                     << " --runs 1 --print-program");
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << "channel fuzz: " << runs << " runs (seeds " << first << " .. " << first + runs - 1 << "), " << cycles
