@@ -225,10 +225,12 @@ PathProgress PathInterpolator::interpolate(double t) {
     // the braking's last residual acceleration round the corner (KRN-3:
     // 40,004 mm/s^3 for a limit of 40,000).
     double t_from = t;
-    const bool stops_on_end = plan_.end().v == 0 && std::abs(plan_.end().p - length) <= 1e-9 * (1 + length);
+    const bool at_rest = std::abs(plan_.end().v) <= 1e-9;  // mm/s: 0 but for round-off
+    const bool stops_on_end = at_rest && std::abs(plan_.end().p - length) <= 1e-9 * (1 + length);
     if (plan_ended || stops_on_end) {
       t_from = plan_start_ + plan_.duration();
       path = plan_.end();
+      if (at_rest) path.v = path.a = 0;
     }
     path.p -= length;
     begin_front(path, t_from);
