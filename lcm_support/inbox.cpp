@@ -17,7 +17,7 @@ namespace {
 
 template <typename Message>
 std::optional<Identity> identity(const void* data, uint32_t size) {
-  Message m;
+  Message m{};  // value-initialised: GCC 12 -Werror=maybe-uninitialized otherwise
   if (!decode(data, size, m)) return std::nullopt;
   return Identity{m.run_id, m.cycle};
 }
