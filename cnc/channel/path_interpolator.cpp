@@ -163,7 +163,7 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
     }
   }
   plan_ = block_profile(state, length, v_end, st.lim, st.slope);
-  plan_start_ = t0;
+  plan_start_cycles_ = t0 / machine_.cycle_time_s();
 }
 
 void PathInterpolator::stop_after(double t, double distance) {
@@ -208,7 +208,7 @@ PathProgress PathInterpolator::interpolate(double t) {
   // block end (feed hold, override 0) waits there.
   while (!look_ahead_.empty()) {
     const double length = look_ahead_.front().segment.length();
-    const bool plan_ended = t - plan_start_ >= plan_.duration();
+    const bool plan_ended = since_plan_start(t) >= plan_.duration();
     if (path.p < length && !(plan_ended && path.p >= length - 1e-9 * (1 + length))) break;
     const std::vector<double> end_point = look_ahead_.front().segment.end();
     finish_front();
@@ -228,7 +228,7 @@ PathProgress PathInterpolator::interpolate(double t) {
     const bool at_rest = std::abs(plan_.end().v) <= 1e-9;  // mm/s: 0 but for round-off
     const bool stops_on_end = at_rest && std::abs(plan_.end().p - length) <= 1e-9 * (1 + length);
     if (plan_ended || stops_on_end) {
-      t_from = plan_start_ + plan_.duration();
+      t_from = plan_start_cycles_ * machine_.cycle_time_s() + plan_.duration();
       path = plan_.end();
       if (at_rest) path.v = path.a = 0;
     }
@@ -249,7 +249,7 @@ PathProgress PathInterpolator::interpolate(double t) {
     run_blocks_without_motion(blocks_.size());
     return PathProgress::all_blocks_run;
   }
-  if (t - plan_start_ >= plan_.duration()) path.v = path.a = 0;  // held short of the block end
+  if (since_plan_start(t) >= plan_.duration()) path.v = path.a = 0;  // held short of the block end
   if (output(path)) return PathProgress::moving;
   // Never a number that is not finite to the drives: nothing moves any more.
   look_ahead_.clear();

@@ -261,3 +261,17 @@ TEST_CASE("DDTG-6 DDTG-10 KRN-5 KRN-3 the channel fuzz seeds that jumped off a s
     for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
   }
 }
+
+TEST_CASE("KRN-3 24 minutes into a run the path keeps the jerk limit: its time is counted in cycles", "[channel]") {
+  // Channel fuzz seed 2003726: 1,438,620 cycles into its run a G00 move
+  // commanded 40,000.08 mm/s^3 (limit 40,000): the time since the plan's
+  // start, k T - k0 T, carried the rounding of k T (2.3e-13 s at 1438 s),
+  // a jitter of 4.6e-11 mm at 200 mm/s in every cycle.
+  const MachineConfig m = test::xyz_machine();
+  Channel channel(m, "N10 #TIME 1438\nN20 G00 X-380 Y-520\nN30 G01 X0 Y0 F6000\nN40 M30\n");
+  logger::LimitChecker checker(m);
+  test::run_program(channel, &checker, nullptr, 0, 2'000'000);
+  CHECK(channel.hli().channel_state == ChannelState::program_end);
+  for (const auto& v : checker.finish().violations)
+    FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s << " s");
+}
