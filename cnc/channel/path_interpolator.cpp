@@ -44,17 +44,21 @@ StopPoint PathInterpolator::leave_front(double t) {
   stop.front_length = front.segment.length();
   stop.s = std::clamp(path_state_at(t).p, 0.0, stop.front_length);
   stop.position = setpoint_positions();
-  if (stop.front_length > 0)
-    observer_.travelled(direction_sign() * front.segment.covered_distance() * stop.s / stop.front_length);
+  if (stop.front_length > 0) {
+    const double covered = front.segment.covered_distance() * stop.s / stop.front_length;
+    observer_.travelled(direction_sign() * covered);
+    covered_before_front_ += covered;
+  }
   travelled_before_front_ += stop.s;
   look_ahead_.clear();
+  motions_.clear();
   return stop;
 }
 
 bool PathInterpolator::push_short_cut(size_t target, const Motion& cut) {
   PathSegment segment(cut, machine_);
   if (!(segment.length() > 0)) return false;
-  look_ahead_.push(target, std::move(segment), blocks_[target].slope);
+  push(target, cut, blocks_[target].slope);
   return true;
 }
 
@@ -74,8 +78,8 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
     // found nothing before it, DDTG-6): on along k from there.
     const size_t k = cursors_.last_finished;
     if (blocks_[k].has_motion) {
-      PathSegment rest(motion_from(blocks_[k].motion, setpoint_positions()), machine_);
-      if (rest.length() > shortest_rest_mm) look_ahead_.push(k, std::move(rest), blocks_[k].slope);
+      const Motion rest = motion_from(blocks_[k].motion, setpoint_positions());
+      if (PathSegment(rest, machine_).length() > shortest_rest_mm) push(k, rest, blocks_[k].slope);
     }
     cursors_.next_to_look_ahead = k + 1;
     refill();
@@ -100,7 +104,7 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   // The front segment ends where block k ends in the old direction, so the
   // way back over block k is what it had covered before the front and on it.
   const double back_over_k = PathSegment(blocks_[k].motion, machine_).length() - stop.front_length + stop.s;
-  if (back_over_k > shortest_rest_mm) look_ahead_.push(k, PathSegment(motion, machine_), blocks_[k].slope);
+  if (back_over_k > shortest_rest_mm) push(k, motion, blocks_[k].slope);
   cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
   refill();
   return true;
@@ -109,6 +113,85 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
 void PathInterpolator::refill() {
   if (direction_ == TravelDirection::backward) refill_backward();
   else refill_forward();
+  const bool exhausted = direction_ == TravelDirection::backward
+                             ? cursors_.next_backward <= cursors_.lowest_stored
+                             : cursors_.next_to_look_ahead >= blocks_.size() || cursors_.next_to_look_ahead == invalid_block_;
+  if (exhausted) place_stop_at_end();
+}
+
+void PathInterpolator::push(size_t index, const Motion& motion, SlopeType slope, bool stop_before) {
+  if (look_ahead_.empty()) {
+    pushed_length_ = travelled_before_front_;
+    pushed_covered_ = covered_before_front_;
+  }
+  PathSegment segment(motion, machine_);
+  if (stop_covered_ && std::isfinite(segment.length())) {
+    const double to_stop = *stop_covered_ - pushed_covered_, covered = segment.covered_distance();
+    const double s = covered > 0 ? segment.length() * to_stop / covered : 0.0;
+    if (s <= shortest_rest_mm) {  // at its start
+      place_stop(segment.position(0));
+      stop_before = true;
+    } else if (s < segment.length() - shortest_rest_mm) {
+      // ISC-3: the block is split where the stop lies; the look-ahead brakes
+      // to v = 0 at the split as before an M function, and the path enters
+      // the second part from standstill.
+      const std::vector<double> point = segment.position(s);
+      const Motion first = motion_until(motion, point), second = motion_from(motion, point);
+      push_segment(index, first, PathSegment(first, machine_), slope, stop_before);
+      place_stop(point);
+      push_segment(index, second, PathSegment(second, machine_), slope, true);
+      return;
+    } else if (s <= segment.length() + shortest_rest_mm) {  // at its end
+      push_segment(index, motion, std::move(segment), slope, stop_before);
+      place_stop(motion.end);
+      return;
+    }
+  }
+  push_segment(index, motion, std::move(segment), slope, stop_before);
+}
+
+void PathInterpolator::push_segment(size_t index, const Motion& motion, PathSegment segment, SlopeType slope,
+                                    bool stop_before) {
+  pushed_length_ += segment.length();
+  pushed_covered_ += segment.covered_distance();
+  look_ahead_.push(index, std::move(segment), slope, stop_before);
+  motions_.emplace_back(index, motion);
+}
+
+void PathInterpolator::place_stop(std::vector<double> position) {
+  stop_at_ = pushed_length_;
+  placed_stop_ = PlacedStop{std::move(position), pushed_covered_ - stop_covered_from_};
+  stop_covered_.reset();
+  replan_ = true;
+}
+
+void PathInterpolator::place_stop_at_end() {
+  if (!stop_covered_) return;
+  if (look_ahead_.empty()) {
+    pushed_length_ = travelled_before_front_;
+    pushed_covered_ = covered_before_front_;
+    place_stop(setpoint_positions());
+  } else {
+    place_stop(motions_.back().second.end);
+  }
+}
+
+void PathInterpolator::restart_here(double t) {
+  const size_t k = look_ahead_.front().block_index;
+  const SlopeType slope = look_ahead_.front().slope;
+  // The front segment and the parts of the same block after it (a split).
+  std::vector<Motion> parts;
+  for (const auto& [index, motion] : motions_) {
+    if (index != k) break;
+    parts.push_back(motion);
+  }
+  const StopPoint stop = leave_front(t);
+  parts.front() = motion_from(parts.front(), stop.position);
+  for (const Motion& part : parts)
+    if (PathSegment(part, machine_).length() > shortest_rest_mm) push(k, part, slope);
+  if (direction_ == TravelDirection::backward) cursors_.next_backward = k;
+  else cursors_.next_to_look_ahead = k + 1;
+  refill();
 }
 
 void PathInterpolator::refill_forward() {
@@ -129,7 +212,7 @@ void PathInterpolator::refill_forward() {
       invalid_block_ = next;
       return;
     }
-    look_ahead_.push(next, std::move(segment), block.slope, stop_before);
+    push(next, block.motion, block.slope, stop_before);
   }
 }
 
@@ -137,7 +220,7 @@ void PathInterpolator::refill_backward() {
   while (!look_ahead_.full() && cursors_.next_backward > cursors_.lowest_stored) {
     const size_t i = --cursors_.next_backward;
     if (!blocks_[i].has_motion) continue;
-    look_ahead_.push(i, PathSegment(reversed(blocks_[i].motion), machine_), blocks_[i].slope);
+    push(i, reversed(blocks_[i].motion), blocks_[i].slope);
   }
 }
 
@@ -171,13 +254,41 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
   plan_start_ = t0;
 }
 
-void PathInterpolator::stop_after(double t, double distance) {
-  stop_at_ = travelled_before_front_ + (look_ahead_.empty() ? 0.0 : path_state_at(t).p) + std::max(distance, 0.0);
+std::vector<Motion> PathInterpolator::path_ahead() const {
+  std::vector<Motion> ahead;
+  for (const auto& [index, motion] : motions_)
+    ahead.push_back(ahead.empty() ? motion_from(motion, setpoint_positions()) : motion);
+  if (direction_ == TravelDirection::backward) {
+    for (size_t i = cursors_.next_backward; i-- > cursors_.lowest_stored;)
+      if (blocks_[i].has_motion) ahead.push_back(reversed(blocks_[i].motion));
+  } else {
+    for (size_t i = cursors_.next_to_look_ahead; i < blocks_.size() && i != invalid_block_; ++i)
+      if (blocks_[i].has_motion) ahead.push_back(blocks_[i].motion);
+  }
+  return ahead;
+}
+
+void PathInterpolator::stop_after(double t, double distance, bool rebuild) {
+  placed_stop_.reset();
+  if (!standing(t)) {
+    stop_at_ = travelled_before_front_ + path_state_at(t).p + std::max(distance, 0.0);
+    replan_ = true;
+    return;
+  }
+  stop_at_.reset();
+  stop_covered_from_ = covered_before_front_ + std::abs(front_covered_);
+  if (look_ahead_.empty()) stop_covered_from_ = covered_before_front_;
+  stop_covered_ = stop_covered_from_ + std::max(distance, 0.0);
+  if (!rebuild) return;
+  if (!look_ahead_.empty()) restart_here(t);
+  else if (!blocks_.empty()) refill();
   replan_ = true;
 }
 
 void PathInterpolator::release_stop() {
   stop_at_.reset();
+  stop_covered_.reset();
+  placed_stop_.reset();
   replan_ = true;
 }
 
@@ -192,6 +303,8 @@ void PathInterpolator::finish_front() {
   observer_.travelled(direction_sign() * front.segment.covered_distance());
   observer_.finish_block(front.block_index);
   travelled_before_front_ += front.segment.length();
+  covered_before_front_ += front.segment.covered_distance();
+  motions_.pop_front();
   if (direction_ == TravelDirection::forward)
     cursors_.next_to_run = std::max(cursors_.next_to_run, front.block_index + 1);
   cursors_.last_finished = front.block_index;
@@ -215,6 +328,9 @@ PathProgress PathInterpolator::interpolate(double t) {
     const double length = look_ahead_.front().segment.length();
     const bool plan_ended = t - plan_start_ >= plan_.duration();
     if (path.p < length && !(plan_ended && path.p >= length - 1e-9 * (1 + length))) break;
+    // A stop at the block end: the path stands on the end, in the block.
+    if (plan_ended && stop_at_ && std::abs(travelled_before_front_ + length - *stop_at_) <= 1e-9 * (1 + *stop_at_))
+      break;
     const std::vector<double> end_point = look_ahead_.front().segment.end();
     finish_front();
     if (look_ahead_.empty()) {
@@ -251,6 +367,7 @@ PathProgress PathInterpolator::interpolate(double t) {
   if (output(path)) return PathProgress::moving;
   // Never a number that is not finite to the drives: nothing moves any more.
   look_ahead_.clear();
+  motions_.clear();
   cursors_.next_to_look_ahead = cursors_.next_to_run = cursors_.next_backward = blocks_.size();
   cursors_.lowest_stored = blocks_.size();
   for (AxisSetpoint& setpoint : setpoints_) setpoint.velocity = setpoint.acceleration = 0;
