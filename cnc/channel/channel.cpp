@@ -24,20 +24,19 @@ bool Channel::finished() const {
 
 void Channel::step(int64_t cycle, const HliControl& control) {
   cycle_ = cycle;
-  const double t = static_cast<double>(cycle - start_cycle_) * machine_.cycle_time_s();
-  apply_control(control, t);
-  if (moving()) run_path(control, t);
+  apply_control(control);
+  if (moving()) run_path(control, time_s());
   write_state();
 }
 
-void Channel::apply_control(const HliControl& control, double t) {
+void Channel::apply_control(const HliControl& control) {
   const bool feed_changed = feed_.apply(control, hli_, events_);
   const bool backward_changed = backward_.apply(control.backward_motion, hli_, events_);
   if (feed_changed || backward_changed) update_hold();
   if (ddtg_.apply(control, hli_.channel_state == ChannelState::active, hli_, events_)) update_hold();
   if (insert_.take(control.insert_cmd, hli_)) update_hold();
   if (programmed_stop_.apply(control, hli_)) {  // continue motion (ISC-5)
-    if (insert_.at_mark()) leave_insert_mark(t);
+    if (insert_.at_mark()) leave_insert_mark(time_s());
     update_hold();
   }
   apply_program_start(control.program_start);

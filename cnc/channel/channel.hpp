@@ -61,7 +61,8 @@ class Channel : private PathObserver {
 
  private:
   // The phases of a cycle.
-  void apply_control(const HliControl& control, double t);
+  void apply_control(const HliControl& control);
+  double time_s() const { return static_cast<double>(cycle_ - start_cycle_) * machine_.cycle_time_s(); }
   void apply_program_start(const ControlUnitBool& start);
   void run_path(const HliControl& control, double t);
   void interpolate(double t);

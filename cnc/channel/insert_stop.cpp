@@ -134,6 +134,11 @@ bool InsertStop::leave(PathInterpolator& path, double t, double distance_mm) {
     next.target_mm = distance_mm + next.sign * d;
     place(path, t, next, d);
   }
+  // At the end of the program (or of the stored contour) no next one follows.
+  if (path.placed_stop() && path.placed_stop()->covered <= 1e-9) {
+    mark_.reset();
+    path.release_stop();
+  }
   return true;
 }
 
@@ -176,11 +181,12 @@ void InsertStop::program_end() {
 
 void InsertStop::write(HliState& hli, const PathInterpolator& path) const {
   InsertCmdState& s = hli.insert_cmd.state_r;
-  s.state = mark_ && !at_mark_ ? 1 : 0;
+  const bool commanded = pending_ && !(pending_->rel_abs_mode == 0 && pending_->dist_or_pos == 0);
+  s.state = (mark_ && !mark_->reached) || commanded ? 1 : 0;
   s.distance_of_next_stop = -1;
   s.position_at_next_stop = {0, 0, 0};
   const auto& placed = path.placed_stop();
-  if (!mark_ || !placed) return;  // ISC-2: -1 while the stop is not found in the program
+  if (!mark_ || !placed || commanded) return;  // ISC-2: -1 while the stop is not found in the program
   const bool landed_at_end =
       mark_->command.axis_nr == 0 && placed->covered < std::abs(mark_->target_mm - mark_->base_mm) - 1e-6;
   const double distance = mark_->command.axis_nr == 0 && !landed_at_end

@@ -78,7 +78,13 @@ struct Rig {
   bool run_to_end() {
     return run_until([&] { return channel.finished(); });
   }
-  bool within_limits() { return checker.finish().violations.empty(); }
+  bool within_limits() {
+    const auto violations = checker.finish().violations;
+    for (const auto& v : violations)
+      UNSCOPED_INFO(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.worst_time_s
+                           << " s, " << v.cycles << " cycles");
+    return violations.empty();
+  }
 };
 
 const char* line_x100 = "N10 G01 X100 F6000\nN20 M30\n";
@@ -217,6 +223,8 @@ TEST_CASE("ISC-6 during motion: a brief stop, then on to the new stop; a new sto
     return stood;
   }, 1000));
   CHECK(rig.x() < 40);  // the brief stop (ISC-6)
+  CHECK(rig.hli().insert_cmd.state_r.state == 1);
+  rig.step();
   CHECK(rig.hli().insert_cmd.state_r.distance_of_next_stop == Approx(900000));
   CHECK(rig.hli().insert_cmd.state_r.position_at_next_stop[0] == 600000);
   CHECK(rig.hli().insert_cmd.state_r.position_at_next_stop[1] == 300000);
