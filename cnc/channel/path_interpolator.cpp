@@ -103,7 +103,16 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   }
   // The front segment ends where block k ends in the old direction, so the
   // way back over block k is what it had covered before the front and on it.
-  const double back_over_k = PathSegment(blocks_[k].motion, machine_).length() - stop.front_length + stop.s;
+  const double block_length = PathSegment(blocks_[k].motion, machine_).length();
+  double back_over_k = block_length - stop.front_length + stop.s;
+  if (std::abs(stop.front_length - block_length) > 1e-9 * (1 + block_length)) {
+    // The front is a part of block k (split at an insert stop mark): what is
+    // left the new way ends at the block's start (backward) or end.
+    const std::vector<double>& to = backward ? blocks_[k].motion.start : blocks_[k].motion.end;
+    double chord_sq = 0;
+    for (size_t i = 0; i < to.size(); ++i) chord_sq += (stop.position[i] - to[i]) * (stop.position[i] - to[i]);
+    back_over_k = std::sqrt(chord_sq);
+  }
   if (back_over_k > shortest_rest_mm) push(k, motion, blocks_[k].slope);
   cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
   refill();
@@ -186,9 +195,18 @@ void PathInterpolator::restart_here(double t) {
     parts.push_back(motion);
   }
   const StopPoint stop = leave_front(t);
-  parts.front() = motion_from(parts.front(), stop.position);
-  for (const Motion& part : parts)
-    if (PathSegment(part, machine_).length() > shortest_rest_mm) push(k, part, slope);
+  // What is left of the front by length: an arc's rest from its end point
+  // would be a full circle.
+  if (stop.front_length - stop.s > shortest_rest_mm) {
+    push(k, motion_from(parts.front(), stop.position), slope);
+  } else if (parts.size() == 1) {
+    // Nothing is left of block k: it is finished, as finish_front() would
+    // have it (the cursors say where the path stands, KRN-5).
+    observer_.finish_block(k);
+    if (direction_ == TravelDirection::forward) cursors_.next_to_run = std::max(cursors_.next_to_run, k + 1);
+    cursors_.last_finished = k;
+  }
+  for (size_t i = 1; i < parts.size(); ++i) push(k, parts[i], slope);
   if (direction_ == TravelDirection::backward) cursors_.next_backward = k;
   else cursors_.next_to_look_ahead = k + 1;
   refill();
@@ -256,8 +274,24 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
 
 std::vector<Motion> PathInterpolator::path_ahead() const {
   std::vector<Motion> ahead;
-  for (const auto& [index, motion] : motions_)
-    ahead.push_back(ahead.empty() ? motion_from(motion, setpoint_positions()) : motion);
+  bool front = true;
+  for (const auto& [index, motion] : motions_) {
+    if (front) {
+      // The rest of the front: nothing at its end point (an arc's rest from
+      // there would be a full circle), all of it at its start.
+      const std::vector<double> here = setpoint_positions();
+      double to_end = 0, to_start = 0;
+      for (size_t i = 0; i < here.size(); ++i) {
+        to_end = std::max(to_end, std::abs(here[i] - motion.end[i]));
+        to_start = std::max(to_start, std::abs(here[i] - motion.start[i]));
+      }
+      if (to_start <= 1e-9) ahead.push_back(motion);
+      else if (to_end > 1e-9) ahead.push_back(motion_from(motion, here));
+      front = false;
+      continue;
+    }
+    ahead.push_back(motion);
+  }
   if (direction_ == TravelDirection::backward) {
     for (size_t i = cursors_.next_backward; i-- > cursors_.lowest_stored;)
       if (blocks_[i].has_motion) ahead.push_back(reversed(blocks_[i].motion));

@@ -62,6 +62,9 @@ struct FuzzOptions {
   int min_items = 4;
   int max_items = 24;
   bool random_plc = true;  // false: program start and prompt M acknowledgements only
+  // Random insert stop commands (ISC-1 .. ISC-9) from the PLC, on a random
+  // stream of their own: false runs every seed exactly as before them.
+  bool insert_stops = true;
   // The PLC stays out of the channel's known bug (tests/unit/channel_known_bugs_test.cpp):
   // a delete distance to go request met by an empty look-ahead while the
   // channel is active makes Channel::leave_front() read an empty deque. So:
@@ -94,6 +97,7 @@ struct Failure {
 
 struct PlcCounts {
   int64_t feedhold_edges = 0, override_changes = 0, ddtg_edges = 0, backward_toggles = 0, m_acks = 0;
+  int64_t insert_commands = 0, insert_stops = 0;  // ISC: commands written with the semaphore, stops continued
 };
 
 struct FuzzRun {
