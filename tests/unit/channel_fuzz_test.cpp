@@ -43,6 +43,8 @@ TEST_CASE("KRN-3 DDTG-1 KRN-5 DPS-1 channel fuzz: random programs and PLC edges 
   // (channel_known_bugs_test.cpp).
   FuzzOptions options;
   options.avoid_known_channel_bugs = true;
+  // Random insert stop commands are the known bug below, not yet here.
+  options.insert_stops = false;
   constexpr int64_t first = 1, runs = 2500;
   int64_t cycles = 0, failed = 0, shown = 0, short_cuts = 0, backward = 0, m_output = 0, random_plc = 0;
   PlcCounts plc;

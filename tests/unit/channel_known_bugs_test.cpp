@@ -14,6 +14,7 @@
 #include <functional>
 #include <string>
 
+#include "channel_fuzz.hpp"
 #include "channel_runner.hpp"
 #include "test_machine.hpp"
 
@@ -186,4 +187,21 @@ TEST_CASE("DDTG-2 DDTG-3 known bug: a short cut shortened again towards a G00 bl
   }, 0, 20000);
   CHECK(shortened);
   CHECK(channel.hli().channel_state == ChannelState::program_end);
+}
+
+TEST_CASE("ISC-3 ISC-6 ISC-9 KRN-5 known bug: random insert stop commands with backward motion on arcs break the "
+          "path",
+          "[.][known-bug]") {
+  // build/bin/channel_fuzz --runs 10000 --avoid-known-bugs with random
+  // insert stop commands (the default) fails a few tens of the 10,000 runs
+  // that pass without them (--no-insert-stops): every failing run has
+  // backward motion, most are arcs; after a reversal near a stop mark's
+  // split, the path moves the wrong way along an arc or jumps (seed 497:
+  // dist_prog_start falls while the axes move forward on N40's arc).
+  hil::fuzz::FuzzOptions options;
+  options.avoid_known_channel_bugs = true;
+  for (uint64_t seed : {497u, 40u, 399u}) {
+    INFO("seed " << seed);
+    CHECK(hil::fuzz::run_channel_fuzz_isolated(seed, options).passed());
+  }
 }
