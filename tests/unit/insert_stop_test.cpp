@@ -433,3 +433,61 @@ TEST_CASE("ISC-9 backward: an iterative DISTANCE stop is kept and works backward
     CHECK(rig.within_limits());
   }
 }
+
+TEST_CASE("ISC-4 POSITION table: relative once, absolute at the current position, relative iterative 0 clears",
+          "[insert_stop]") {
+  SECTION("relative once = 0: a stop at the current axis position, at once") {
+    Rig rig(line_x100);
+    rig.start();
+    rig.run_until([&] { return rig.x() > 20; });
+    rig.insert(0, 2, 0, 1);
+    REQUIRE(rig.run_to_stop());
+    const double x = rig.x();
+    CHECK(x < 30);  // the brief stop, then at once
+    rig.continue_motion();
+    REQUIRE(rig.run_to_stop());
+    CHECK(rig.channel.finished());  // one-off
+  }
+  SECTION("relative once <> 0: once, relative to the axis position") {
+    Rig rig(line_x100);
+    rig.insert(-150000, 2, 0, 1);  // X - 15 mm: X never goes there, it lands at the end
+    rig.step();
+    rig.start();
+    REQUIRE(rig.run_to_stop());
+    CHECK(rig.x() == Approx(100).margin(1e-9));
+    rig.continue_motion();
+    REQUIRE(rig.run_to_end());
+    Rig once(line_x100);
+    once.insert(250000, 2, 0, 1);
+    once.step();
+    once.start();
+    REQUIRE(once.run_to_stop());
+    CHECK(once.x() == Approx(25).margin(1e-9));
+    once.continue_motion();
+    REQUIRE(once.run_to_stop());
+    CHECK(once.channel.finished());
+  }
+  SECTION("absolute = the current axis position: a stop there, at once") {
+    Rig rig("N10 G01 Y30 F6000\nN20 X50\nM30\n");
+    rig.insert(0, 1, 0, 1);  // X0, where X stands at the start
+    rig.step();
+    rig.start();
+    REQUIRE(rig.run_to_stop());
+    CHECK(rig.y() == Approx(0).margin(1e-9));
+    CHECK(rig.hli().insert_cmd.state_r.distance_of_next_stop == 0);
+    rig.continue_motion();
+    REQUIRE(rig.run_to_stop());
+    CHECK(rig.channel.finished());
+  }
+  SECTION("relative iterative = 0 clears a stop not yet reached") {
+    Rig rig(line_x100);
+    rig.insert(800000, 1, 0, 1);
+    rig.step();
+    rig.start();
+    rig.run_until([&] { return rig.x() > 30; });
+    rig.insert(0, 0, 0, 1);
+    REQUIRE(rig.run_to_stop());
+    CHECK(rig.channel.finished());
+    CHECK(rig.within_limits());
+  }
+}
