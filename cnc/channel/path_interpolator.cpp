@@ -10,6 +10,10 @@
 namespace hil::cnc {
 namespace {
 
+// A part shorter than this is not split off or moved (10 nm): a shorter arc
+// could not be told from a full circle.
+constexpr double shortest_rest_mm = 1e-5;
+
 // Numbers the planner can work with: a finite length and finite limits.
 bool finite(const PathSegment& segment) {
   const Limits& lim = segment.limits();
@@ -40,17 +44,21 @@ StopPoint PathInterpolator::leave_front(double t) {
   stop.front_length = front.segment.length();
   stop.s = std::clamp(path_state_at(t).p, 0.0, stop.front_length);
   stop.position = setpoint_positions();
-  if (stop.front_length > 0)
-    observer_.travelled(direction_sign() * front.segment.covered_distance() * stop.s / stop.front_length);
+  if (stop.front_length > 0) {
+    const double covered = front.segment.covered_distance() * stop.s / stop.front_length;
+    observer_.travelled(direction_sign() * covered);
+    covered_before_front_ += covered;
+  }
   travelled_before_front_ += stop.s;
   look_ahead_.clear();
+  motions_.clear();
   return stop;
 }
 
 bool PathInterpolator::push_short_cut(size_t target, const Motion& cut) {
   PathSegment segment(cut, machine_);
   if (!(segment.length() > 0)) return false;
-  look_ahead_.push(target, std::move(segment), blocks_[target].slope);
+  push(target, cut, blocks_[target].slope);
   return true;
 }
 
@@ -71,7 +79,7 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
     const size_t k = cursors_.last_finished;
     if (blocks_[k].has_motion)
       if (const auto rest = rest_of_motion(blocks_[k].motion, setpoint_positions(), false, machine_))
-        look_ahead_.push(k, PathSegment(*rest, machine_), blocks_[k].slope);
+        push(k, *rest, blocks_[k].slope);
     cursors_.next_to_look_ahead = k + 1;
     refill();
     return true;
@@ -93,9 +101,10 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   } else {
     cursors_.next_to_look_ahead = k + 1;
   }
-  // What is left of block k the new way: back to its start, or on to its end.
+  // What is left of block k the new way: back to its start, or on to its end
+  // (the front may be a part of block k, split at an insert stop mark).
   if (const auto rest = rest_of_motion(blocks_[k].motion, stop.position, backward, machine_, along_k))
-    look_ahead_.push(k, PathSegment(*rest, machine_), blocks_[k].slope);
+    push(k, *rest, blocks_[k].slope);
   cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
   refill();
   return true;
@@ -104,6 +113,94 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
 void PathInterpolator::refill() {
   if (direction_ == TravelDirection::backward) refill_backward();
   else refill_forward();
+  const bool exhausted = direction_ == TravelDirection::backward
+                             ? cursors_.next_backward <= cursors_.lowest_stored
+                             : cursors_.next_to_look_ahead >= blocks_.size() || cursors_.next_to_look_ahead == invalid_block_;
+  if (exhausted) place_stop_at_end();
+}
+
+void PathInterpolator::push(size_t index, const Motion& motion, SlopeType slope, bool stop_before) {
+  if (look_ahead_.empty()) {
+    pushed_length_ = travelled_before_front_;
+    pushed_covered_ = covered_before_front_;
+  }
+  PathSegment segment(motion, machine_);
+  if (stop_covered_ && std::isfinite(segment.length())) {
+    const double to_stop = *stop_covered_ - pushed_covered_, covered = segment.covered_distance();
+    const double s = covered > 0 ? segment.length() * to_stop / covered : 0.0;
+    if (s <= shortest_rest_mm) {  // at its start
+      place_stop(segment.position(0));
+      stop_before = true;
+    } else if (s < segment.length() - shortest_rest_mm) {
+      // ISC-3: the block is split where the stop lies; the look-ahead brakes
+      // to v = 0 at the split as before an M function, and the path enters
+      // the second part from standstill.
+      const std::vector<double> point = segment.position(s);
+      const Motion first = motion_until(motion, point), second = motion_from(motion, point);
+      push_segment(index, first, PathSegment(first, machine_), slope, stop_before);
+      place_stop(point);
+      push_segment(index, second, PathSegment(second, machine_), slope, true);
+      return;
+    } else if (s <= segment.length() + shortest_rest_mm) {  // at its end
+      push_segment(index, motion, std::move(segment), slope, stop_before);
+      place_stop(motion.end);
+      return;
+    }
+  }
+  push_segment(index, motion, std::move(segment), slope, stop_before);
+}
+
+void PathInterpolator::push_segment(size_t index, const Motion& motion, PathSegment segment, SlopeType slope,
+                                    bool stop_before) {
+  pushed_length_ += segment.length();
+  pushed_covered_ += segment.covered_distance();
+  look_ahead_.push(index, std::move(segment), slope, stop_before);
+  motions_.emplace_back(index, motion);
+}
+
+void PathInterpolator::place_stop(std::vector<double> position) {
+  stop_at_ = pushed_length_;
+  placed_stop_ = PlacedStop{std::move(position), pushed_covered_ - stop_covered_from_};
+  stop_covered_.reset();
+  replan_ = true;
+}
+
+void PathInterpolator::place_stop_at_end() {
+  if (!stop_covered_) return;
+  if (look_ahead_.empty()) {
+    pushed_length_ = travelled_before_front_;
+    pushed_covered_ = covered_before_front_;
+    place_stop(setpoint_positions());
+  } else {
+    place_stop(motions_.back().second.end);
+  }
+}
+
+void PathInterpolator::restart_here(double t) {
+  const size_t k = look_ahead_.front().block_index;
+  const SlopeType slope = look_ahead_.front().slope;
+  // The front segment and the parts of the same block after it (a split).
+  std::vector<Motion> parts;
+  for (const auto& [index, motion] : motions_) {
+    if (index != k) break;
+    parts.push_back(motion);
+  }
+  const StopPoint stop = leave_front(t);
+  // What is left of the front by length: an arc's rest from its end point
+  // would be a full circle.
+  if (stop.front_length - stop.s > shortest_rest_mm) {
+    push(k, motion_from(parts.front(), stop.position), slope);
+  } else if (parts.size() == 1) {
+    // Nothing is left of block k: it is finished, as finish_front() would
+    // have it (the cursors say where the path stands, KRN-5).
+    observer_.finish_block(k);
+    if (direction_ == TravelDirection::forward) cursors_.next_to_run = std::max(cursors_.next_to_run, k + 1);
+    cursors_.last_finished = k;
+  }
+  for (size_t i = 1; i < parts.size(); ++i) push(k, parts[i], slope);
+  if (direction_ == TravelDirection::backward) cursors_.next_backward = k;
+  else cursors_.next_to_look_ahead = k + 1;
+  refill();
 }
 
 void PathInterpolator::refill_forward() {
@@ -124,7 +221,7 @@ void PathInterpolator::refill_forward() {
       invalid_block_ = next;
       return;
     }
-    look_ahead_.push(next, std::move(segment), block.slope, stop_before);
+    push(next, block.motion, block.slope, stop_before);
   }
 }
 
@@ -132,7 +229,7 @@ void PathInterpolator::refill_backward() {
   while (!look_ahead_.full() && cursors_.next_backward > cursors_.lowest_stored) {
     const size_t i = --cursors_.next_backward;
     if (!blocks_[i].has_motion) continue;
-    look_ahead_.push(i, PathSegment(reversed(blocks_[i].motion), machine_), blocks_[i].slope);
+    push(i, reversed(blocks_[i].motion), blocks_[i].slope);
   }
 }
 
@@ -166,13 +263,57 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
   plan_start_cycles_ = t0 / machine_.cycle_time_s();
 }
 
-void PathInterpolator::stop_after(double t, double distance) {
-  stop_at_ = travelled_before_front_ + (look_ahead_.empty() ? 0.0 : path_state_at(t).p) + std::max(distance, 0.0);
+std::vector<Motion> PathInterpolator::path_ahead() const {
+  std::vector<Motion> ahead;
+  bool front = true;
+  for (const auto& [index, motion] : motions_) {
+    if (front) {
+      // The rest of the front: nothing at its end point (an arc's rest from
+      // there would be a full circle), all of it at its start.
+      const std::vector<double> here = setpoint_positions();
+      double to_end = 0, to_start = 0;
+      for (size_t i = 0; i < here.size(); ++i) {
+        to_end = std::max(to_end, std::abs(here[i] - motion.end[i]));
+        to_start = std::max(to_start, std::abs(here[i] - motion.start[i]));
+      }
+      if (to_start <= 1e-9) ahead.push_back(motion);
+      else if (to_end > 1e-9) ahead.push_back(motion_from(motion, here));
+      front = false;
+      continue;
+    }
+    ahead.push_back(motion);
+  }
+  if (direction_ == TravelDirection::backward) {
+    for (size_t i = cursors_.next_backward; i-- > cursors_.lowest_stored;)
+      if (blocks_[i].has_motion) ahead.push_back(reversed(blocks_[i].motion));
+  } else {
+    for (size_t i = cursors_.next_to_look_ahead; i < blocks_.size() && i != invalid_block_; ++i)
+      if (blocks_[i].has_motion) ahead.push_back(blocks_[i].motion);
+  }
+  return ahead;
+}
+
+void PathInterpolator::stop_after(double t, double distance, bool rebuild) {
+  placed_stop_.reset();
+  if (!standing(t)) {
+    stop_at_ = travelled_before_front_ + path_state_at(t).p + std::max(distance, 0.0);
+    replan_ = true;
+    return;
+  }
+  stop_at_.reset();
+  stop_covered_from_ = covered_before_front_ + std::abs(front_covered_);
+  if (look_ahead_.empty()) stop_covered_from_ = covered_before_front_;
+  stop_covered_ = stop_covered_from_ + std::max(distance, 0.0);
+  if (!rebuild) return;
+  if (!look_ahead_.empty()) restart_here(t);
+  else if (!blocks_.empty()) refill();
   replan_ = true;
 }
 
 void PathInterpolator::release_stop() {
   stop_at_.reset();
+  stop_covered_.reset();
+  placed_stop_.reset();
   replan_ = true;
 }
 
@@ -187,6 +328,8 @@ void PathInterpolator::finish_front() {
   observer_.travelled(direction_sign() * front.segment.covered_distance());
   observer_.finish_block(front.block_index);
   travelled_before_front_ += front.segment.length();
+  covered_before_front_ += front.segment.covered_distance();
+  motions_.pop_front();
   if (direction_ == TravelDirection::forward)
     cursors_.next_to_run = std::max(cursors_.next_to_run, front.block_index + 1);
   cursors_.last_finished = front.block_index;
@@ -210,6 +353,9 @@ PathProgress PathInterpolator::interpolate(double t) {
     const double length = look_ahead_.front().segment.length();
     const bool plan_ended = since_plan_start(t) >= plan_.duration();
     if (path.p < length && !(plan_ended && path.p >= length - 1e-9 * (1 + length))) break;
+    // A stop at the block end: the path stands on the end, in the block.
+    if (plan_ended && stop_at_ && std::abs(travelled_before_front_ + length - *stop_at_) <= 1e-9 * (1 + *stop_at_))
+      break;
     const std::vector<double> end_point = look_ahead_.front().segment.end();
     finish_front();
     if (look_ahead_.empty()) {
@@ -253,6 +399,7 @@ PathProgress PathInterpolator::interpolate(double t) {
   if (output(path)) return PathProgress::moving;
   // Never a number that is not finite to the drives: nothing moves any more.
   look_ahead_.clear();
+  motions_.clear();
   cursors_.next_to_look_ahead = cursors_.next_to_run = cursors_.next_backward = blocks_.size();
   cursors_.lowest_stored = blocks_.size();
   for (AxisSetpoint& setpoint : setpoints_) setpoint.velocity = setpoint.acceleration = 0;

@@ -6,6 +6,7 @@
 // turn, stop at a path position, the velocity factor of the path's hold.
 #include <cmath>
 #include <cstddef>
+#include <deque>
 #include <optional>
 #include <vector>
 
@@ -100,11 +101,37 @@ class PathInterpolator {
 
   // A stop `distance` mm further along the path from where it is at t, at
   // v = 0 (insert stop marks): the path holds there until release_stop().
-  // A stop closer than the path can brake moves out to where it can stop.
-  void stop_after(double t, double distance);
+  // Where the path stands (ISC-3), `distance` is on the scale of
+  // dist_prog_start (PathSegment::covered_distance) and the block in which
+  // the stop lies is split there into two look-ahead segments, the second
+  // one entered from standstill: the look-ahead brakes for it as for an M
+  // function at a block end, jerk-limited, and the path stops on the mark.
+  // Beyond the last block (the program end, or backward the start of the
+  // stored contour) it stops at the end. While moving, `distance` is path
+  // length, and a stop closer than the path can brake moves out to where
+  // it can stop.
+  // rebuild = false: the look-ahead is about to be emptied and filled anew
+  // (a delete distance to go short cut): the stop is placed as it fills.
+  void stop_after(double t, double distance, bool rebuild = true);
   void release_stop();
+  // The path stands: its look-ahead is built again from where it stands
+  // (drops the split of a stop cleared); go on with go_on_from_standstill.
+  void restart(double t) {
+    if (!look_ahead_.empty()) restart_here(t);
+  }
+  // The motions from where the path stands on, in the travel direction: the
+  // rest of the front block, the look-ahead, the blocks after it (POSITION
+  // mode searches them, ISC-4).
+  std::vector<Motion> path_ahead() const;
   // The path stands at the stop asked for.
   bool at_stop(double t) const;
+  // Where the stop lies once the look-ahead has reached it, and how much of
+  // the asked-for distance lies before it (less if it was moved to the end).
+  struct PlacedStop {
+    std::vector<double> position;
+    double covered = 0;  // from where stop_after() was called
+  };
+  const std::optional<PlacedStop>& placed_stop() const { return placed_stop_; }
 
   // A motion block whose geometry is not finite (a radius of 1e308): the
   // path stops at the end of the block before it, as at a decode error.
@@ -116,6 +143,15 @@ class PathInterpolator {
 
  private:
   void refill();
+  // Every segment enters the look-ahead here: where a stop asked for lies
+  // in it, split in two (stop_after).
+  void push(size_t index, const Motion& motion, SlopeType slope, bool stop_before = false);
+  void push_segment(size_t index, const Motion& motion, PathSegment segment, SlopeType slope, bool stop_before);
+  void place_stop(std::vector<double> position);
+  // Nothing more comes into the look-ahead this way: a stop not placed yet lands at its end.
+  void place_stop_at_end();
+  // The path stands: the look-ahead is built again from where it stands.
+  void restart_here(double t);
   void refill_forward();
   void refill_backward();
   // Makes the look-ahead's front block the one in the interpolator, after
@@ -149,6 +185,14 @@ class PathInterpolator {
   // where a stop is asked for on the same scale.
   double travelled_before_front_ = 0;
   std::optional<double> stop_at_;
+  // The same on the scale of covered distance (DPS-1), for a stop not yet
+  // placed in the look-ahead; where the look-ahead's pushed segments end.
+  double covered_before_front_ = 0;
+  std::optional<double> stop_covered_;
+  double stop_covered_from_ = 0;
+  std::optional<PlacedStop> placed_stop_;
+  double pushed_length_ = 0, pushed_covered_ = 0;
+  std::deque<std::pair<size_t, Motion>> motions_;  // block index and motion of the look-ahead's segments
   std::optional<size_t> invalid_block_;
   std::vector<AxisSetpoint> setpoints_;
   double path_velocity_ = 0;

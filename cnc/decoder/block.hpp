@@ -37,6 +37,21 @@ struct MFunction {
   bool operator==(const MFunction& other) const { return nr == other.nr && pre_output_mm == other.pre_output_mm; }
 };
 
+// A stop mark (ISC-1, ISC-8): where and how, as the insert command unit's
+// command_w has it.
+struct InsertCommand {
+  double dist_or_pos = 0;  // 0.1 um
+  int rel_abs_mode = 0;    // 0 relative iterative, 1 absolute, 2 relative once
+  int axis_nr = 0;         // 0 DISTANCE mode, > 0 POSITION mode (1 = the first machine axis)
+  int m_function_nr = 0;   // 0 M00, 1 M01, > 1 M<n> (MVS_SVS)
+  int32_t add_nr = 0;
+};
+// #INSERT CMD [ON|OFF] [..] (ISC-8).
+struct InsertCmdLine {
+  bool off = false;  // OFF: the mark is cleared, insertion disabled until ON
+  std::optional<InsertCommand> command;
+};
+
 struct Block {
   int64_t nc_line = 0;   // 1-based line of the NC program
   // Lines the decoder has read up to this one, repeated lines ($FOR)
@@ -59,11 +74,13 @@ struct Block {
   // acknowledged by it before the motion starts (MVS_SVS), in order.
   std::vector<MFunction> m_functions;
   double dwell_s = 0;  // #TIME: the path waits this long, s
+  std::optional<int> programmed_stop;  // M00 (0) or M01 (1), ISC-5
+  std::optional<InsertCmdLine> insert_cmd;
 
   // The path stands still where this block is reached: for the PLC's
   // acknowledgement, a dwell, or a channel initialisation.
   bool stops_path() const {
-    return !m_functions.empty() || dwell_s > 0 ||
+    return !m_functions.empty() || dwell_s > 0 || programmed_stop || insert_cmd ||
            short_cut_restriction == ShortCutRestriction::channel_initialisation;
   }
   // Anything for the interpolator to do besides moving.

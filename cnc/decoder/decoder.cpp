@@ -86,6 +86,7 @@ DecodedProgram decode_program(const std::string& text, const MachineConfig& mach
       if (!decoding::decode_line(line, line_nr, lines_read, state, program.blocks)) break;
     } catch (const LineError& e) {
       program.error = line_error(e.message, line, line_nr);
+      program.error->id = e.id;
       break;
     } catch (const std::invalid_argument& e) {
       program.error = line_error(e.what(), line, line_nr);

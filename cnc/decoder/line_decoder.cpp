@@ -54,6 +54,11 @@ void add_m_function(const Word& w, const DecoderState& state, Block& block) {
     block.program_end = true;
     return;
   }
+  if (m == 0 || m == 1) {  // M00 / M01: the channel's own stop (ISC-5), not output to the PLC
+    if (block.programmed_stop) throw LineError{"two of M00 / M01 in one block"};
+    block.programmed_stop = m;
+    return;
+  }
   const auto pre_output = state.pre_output_mm.find(m);
   block.m_functions.push_back({m, pre_output == state.pre_output_mm.end() ? 0.0 : pre_output->second});
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <iterator>
@@ -174,8 +176,97 @@ void decode_channel_init(const std::string& arguments, DecoderState&, Block& blo
   block.short_cut_restriction = ShortCutRestriction::channel_initialisation;
 }
 
+// A whole number of an #INSERT CMD parameter within [min, max].
+int64_t insert_whole(const std::string& key, const std::string& text, const DecoderState& state, int64_t min,
+                     int64_t max) {
+  double v = 0;
+  try {
+    v = evaluate_expression(text, state.parameters);
+  } catch (const std::invalid_argument&) {
+    throw LineError{"#INSERT CMD " + key + "='" + text + "' is not a number"};
+  }
+  if (!(v >= static_cast<double>(min) && v <= static_cast<double>(max)) || v != std::floor(v))
+    throw LineError{"#INSERT CMD " + key + "=" + text + ": a whole number " + std::to_string(min) + " .. " +
+                    std::to_string(max)};
+  return static_cast<int64_t>(v);
+}
+
+// #INSERT CMD [ON|OFF] [AXNR=.. MNR=.. ADDR=.. DIST=.. ABS|REL|REL_ONCE]
+// (ISC-8); the defaults are #INSERT CMD [MNR=0 DIST=0 REL AXNR=0].
+void decode_insert_cmd(const std::string& arguments, DecoderState& state, Block& block) {
+  InsertCmdLine line;
+  std::string rest = arguments;
+  bool on = false;
+  if (rest.rfind("ON", 0) == 0 && (rest.size() == 2 || rest[2] == ' ' || rest[2] == '[')) {
+    on = true;
+    rest = rest.substr(2);
+  } else if (rest.rfind("OFF", 0) == 0 && (rest.size() == 3 || rest[3] == ' ' || rest[3] == '[')) {
+    line.off = true;
+    rest = rest.substr(3);
+  }
+  const size_t first = rest.find_first_not_of(' ');
+  rest = first == std::string::npos ? "" : rest.substr(first);
+  if (!rest.empty()) {
+    if (line.off) throw LineError{"#INSERT CMD OFF takes no parameters"};
+    if (rest.front() != '[' || rest.back() != ']' || rest.find(']') != rest.size() - 1)
+      throw LineError{"#INSERT CMD takes [AXNR=.. MNR=.. ADDR=.. DIST=.. ABS|REL|REL_ONCE], not '" + rest + "'"};
+    InsertCommand c;
+    int modes = 0;
+    // Blanks around '=' belong to it: DIST = 5 is DIST=5.
+    std::string items;
+    for (char ch : rest.substr(1, rest.size() - 2)) {
+      if (ch == ',') ch = ' ';
+      if (ch == ' ' && !items.empty() && items.back() == '=') continue;
+      if (ch == '=' && !items.empty() && items.back() == ' ') items.pop_back();
+      items += ch;
+    }
+    std::vector<std::string> words;
+    for (size_t at = 0; at < items.size();) {
+      const size_t begin = items.find_first_not_of(' ', at);
+      if (begin == std::string::npos) break;
+      const size_t end = std::min(items.find(' ', begin), items.size());
+      words.push_back(items.substr(begin, end - begin));
+      at = end;
+    }
+    for (const std::string& item : words) {
+      const size_t eq = item.find('=');
+      const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+      if (eq == std::string::npos) {
+        if (key == "ABS") c.rel_abs_mode = 1;
+        else if (key == "REL") c.rel_abs_mode = 0;
+        else if (key == "REL_ONCE") c.rel_abs_mode = 2;
+        else throw LineError{"#INSERT CMD: unknown parameter '" + key + "'"};
+        if (++modes > 1)
+          throw LineError{"#INSERT CMD: ABS, REL and REL_ONCE exclude each other", 22130};
+      } else if (key == "AXNR" || key == "AX") {
+        c.axis_nr = static_cast<int>(
+            insert_whole(key, value, state, 0, static_cast<int64_t>(state.machine.axes.size())));
+      } else if (key == "MNR") {
+        c.m_function_nr = static_cast<int>(insert_whole(key, value, state, 0, 65535));
+      } else if (key == "ADDR") {
+        c.add_nr = static_cast<int32_t>(insert_whole(key, value, state, INT32_MIN, INT32_MAX));
+      } else if (key == "DIST") {
+        double d = 0;
+        try {
+          d = evaluate_expression(value, state.parameters);
+        } catch (const std::invalid_argument&) {
+          throw LineError{"#INSERT CMD DIST='" + value + "' is not a number"};
+        }
+        if (!(std::abs(d) <= max_length_mm * 1e4)) throw LineError{"#INSERT CMD DIST=" + value + " is out of range"};
+        c.dist_or_pos = d;
+      } else {
+        throw LineError{"#INSERT CMD: unknown parameter '" + key + "'"};
+      }
+    }
+    line.command = c;
+  } else if (!on && !line.off) {
+    line.command = InsertCommand{};  // the defaults: DIST=0 REL clears the mark
+  }
+  block.insert_cmd = line;
+}
+
 // A new command is a handler above and one row here; next (KRN-1, KRN-6):
-// #INSERT CMD, #FLUSH, #FLUSH WAIT, #CONTOUR MODE.
+// #FLUSH, #FLUSH WAIT, #CONTOUR MODE.
 constexpr NcCommand nc_commands[] = {
     {"#DISTANCE PROG START", decode_distance_prog_start},
     {"#SLOPE", decode_slope},
@@ -183,6 +274,7 @@ constexpr NcCommand nc_commands[] = {
     {"#TIME", decode_time},
     {"#CS", decode_coordinate_system},
     {"#CHANNEL INIT", decode_channel_init},
+    {"#INSERT CMD", decode_insert_cmd},
 };
 
 // None yet: Z[LIFT_START ..], Z[LIFT_END], Z[LIFT ..]

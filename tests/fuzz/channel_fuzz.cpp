@@ -32,7 +32,12 @@ class FuzzPlc {
  public:
   // Override values up to 120 %: above the machine's override_max_percent
   // the channel clamps them (with a warning).
-  FuzzPlc(uint64_t seed, int64_t chaos_end) : rng_(seed), chaos_end_(chaos_end) {
+  FuzzPlc(uint64_t seed, int64_t chaos_end, bool insert_stops)
+      : rng_(seed), insert_rng_(seed ^ 0x15c0ffee), chaos_end_(chaos_end), insert_stops_(insert_stops) {
+    use_insert_ = insert_rng_.chance(0.6);
+    insert_mean_ = insert_rng_.log_uniform(20, 2000);
+    continue_delay_max_ = insert_rng_.chance(0.5) ? 3 : 400;
+    next_insert_ = 1 + static_cast<int64_t>(insert_rng_.uniform(0, 2 * insert_mean_));
     use_feedhold_ = rng_.chance(0.5);
     use_override_ = rng_.chance(0.6);
     ramp_override_ = rng_.chance(0.2);
@@ -110,9 +115,61 @@ class FuzzPlc {
       ++counts_.backward_toggles;
     }
     acknowledge(k, s, c, chaos);
+    if (insert_stops_) insert(k, s, c, chaos);
   }
 
+  // The M function of an insert stop mark (M<n>, ISC-5).
+  static constexpr int insert_m_function = 95;
+
  private:
+  // Insert stop marks (ISC): random commands with the semaphore handshake,
+  // every row of the DISTANCE and POSITION tables, M00 / M01 / M<n>, and
+  // continue motion a random delay after an M00 / M01 stop. Calm: one
+  // command that clears the mark, prompt continuation.
+  void insert(int64_t k, const HliState& s, HliControl& c, bool chaos) {
+    c.insert_cmd.semaphor_rw = s.insert_cmd.semaphor_rw;  // the CNC cleared it once read
+    c.insert_cmd.enable_w = !chaos || !insert_rng_.chance(0.01);
+    c.continue_motion.enable_w = true;
+    if (c.continue_motion.command_w) {
+      c.continue_motion.command_w = false;
+    } else if (s.stop_conditions_r & (stop_condition::m0_stop | stop_condition::m1_stop)) {
+      if (continue_at_ < 0) continue_at_ = k + insert_rng_.integer(0, chaos ? continue_delay_max_ : 3);
+      if (k >= continue_at_) {
+        c.continue_motion.command_w = true;
+        continue_at_ = -1;
+        ++counts_.insert_stops;
+      }
+    }
+    if (chaos && use_insert_ && insert_rng_.chance(0.002)) c.m01_stop_enable = {insert_rng_.chance(0.5), true};
+    if (!chaos && !cleared_) {
+      c.m01_stop_enable = {false, true};
+      if (c.insert_cmd.semaphor_rw) return;
+      c.insert_cmd.command_w = {};  // DIST=0 REL: clears
+      c.insert_cmd.semaphor_rw = true;
+      c.insert_cmd.enable_w = true;
+      cleared_ = true;
+      return;
+    }
+    if (!chaos || !use_insert_ || k < next_insert_ || c.insert_cmd.semaphor_rw) return;
+    next_insert_ = k + 1 + static_cast<int64_t>(insert_rng_.uniform(0, 2 * insert_mean_));
+    InsertCmdCommand& w = c.insert_cmd.command_w;
+    const size_t dist = insert_rng_.pick({0.1, 0.1, 0.3, 0.4, 0.1});
+    w.dist_or_pos = dist == 0   ? 0.0
+                    : dist == 1 ? -insert_rng_.uniform(0, 1e6)
+                    : dist == 2 ? insert_rng_.uniform(0, 5e4)
+                    : dist == 3 ? insert_rng_.uniform(0, 1e6)
+                                : insert_rng_.uniform(1e6, 1e8);
+    w.rel_abs_mode = static_cast<uint16_t>(insert_rng_.pick({0.35, 0.3, 0.3, 0.05}));
+    w.axis_nr = insert_rng_.chance(0.7) ? 0 : static_cast<uint16_t>(insert_rng_.integer(1, 4));  // 4: no such axis
+    if (w.axis_nr > 0 && w.axis_nr <= 3 && w.rel_abs_mode == 1)  // somewhere near the axis
+      w.dist_or_pos = static_cast<double>(s.axis_position_r[w.axis_nr - 1]) + insert_rng_.uniform(-2e5, 2e5);
+    const size_t m = insert_rng_.pick({0.5, 0.25, 0.25});
+    w.m_function_nr = static_cast<uint16_t>(m == 0 ? 0 : m == 1 ? 1 : insert_m_function);
+    w.add_nr = static_cast<int32_t>(insert_rng_.integer(-100, 100));
+    c.insert_cmd.semaphor_rw = true;
+    ++counts_.insert_commands;
+  }
+
   // A rising edge of m_function_ack.command_w (one cycle long) a random
   // delay after m_function_request_r shows; a request still shown after an
   // edge is a new one (or the old one, if the edge came without enable_w).
@@ -136,7 +193,12 @@ class FuzzPlc {
   int64_t gap(double mean) { return 1 + static_cast<int64_t>(rng_.uniform(0, 2 * mean)); }
 
   Rng rng_;
+  Rng insert_rng_;
   int64_t chaos_end_;
+  bool insert_stops_;
+  bool use_insert_ = false, cleared_ = false;
+  double insert_mean_ = 0;
+  int64_t continue_delay_max_ = 3, next_insert_ = 0, continue_at_ = -1;
   int32_t override_top_ = 1200;
   bool use_feedhold_, use_override_, ramp_override_, use_ddtg_, use_backward_, spurious_acks_;
   double feedhold_mean_, override_mean_, ddtg_mean_, backward_mean_;
@@ -257,7 +319,8 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   const double short_cut_s = std::isfinite(slowest) ? std::sqrt(extent_sq) / slowest * 1000.0 / calm_override_min : 0;
   const double calm_s = t100 * 1000.0 / calm_override_min + short_cut_s + program.dwell_s +
                         0.008 * static_cast<double>(program.m_functions.size()) + 2.0;
-  run.cycle_bound = run.chaos_cycles + static_cast<int64_t>(std::ceil(1.5 * calm_s / dt)) + 1000;
+  run.cycle_bound = run.chaos_cycles + static_cast<int64_t>(std::ceil(1.5 * calm_s / dt)) + 1000 +
+                    (options.insert_stops && options.random_plc ? 3000 : 0);  // a last stop, its continuation
   return run;
 }
 
@@ -273,7 +336,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
 
   cnc::Channel channel(machine, program.text);
   logger::LimitChecker checker(machine);
-  FuzzPlc plc(mix_seed(seed ^ 0x91c), run.chaos_cycles);
+  FuzzPlc plc(mix_seed(seed ^ 0x91c), run.chaos_cycles, options.insert_stops && options.random_plc);
   HliControl control;
   control.program_start = {true, true};
   control.feedhold.enable_w = true;
@@ -346,7 +409,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     if (line < 0 || line > lines)
       fail({"event", k, "", "block_count_r", static_cast<double>(line), static_cast<double>(lines), 0,
             "block_count_r is no line of the program"});
-    if (s.m_function_request_r &&
+    if (s.m_function_request_r && s.m_function_nr_r != FuzzPlc::insert_m_function &&
         std::find(program.m_functions.begin(), program.m_functions.end(), s.m_function_nr_r) == program.m_functions.end())
       fail({"event", k, "", "m_function_nr_r", static_cast<double>(s.m_function_nr_r), 0, line,
             "an M function the program does not have"});
@@ -492,7 +555,8 @@ std::string serialise(const FuzzRun& run) {
                    static_cast<double>(run.backward), static_cast<double>(run.m_output), static_cast<double>(run.events),
                    static_cast<double>(run.plc.feedhold_edges), static_cast<double>(run.plc.override_changes),
                    static_cast<double>(run.plc.ddtg_edges), static_cast<double>(run.plc.backward_toggles),
-                   static_cast<double>(run.plc.m_acks), static_cast<double>(run.failures.size()),
+                   static_cast<double>(run.plc.m_acks), static_cast<double>(run.plc.insert_commands),
+                   static_cast<double>(run.plc.insert_stops), static_cast<double>(run.failures.size()),
                    static_cast<double>(run.event_log.size())})
     put(out, x);
   for (const std::string& e : run.event_log) put(out, e);
@@ -523,6 +587,8 @@ bool deserialise(const std::string& in, FuzzRun& run) {
   run.plc.ddtg_edges = count();
   run.plc.backward_toggles = count();
   run.plc.m_acks = count();
+  run.plc.insert_commands = count();
+  run.plc.insert_stops = count();
   const int64_t failures = count();
   const int64_t logged = count();
   run.event_log.clear();

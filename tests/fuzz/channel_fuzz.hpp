@@ -62,6 +62,9 @@ struct FuzzOptions {
   int min_items = 4;
   int max_items = 24;
   bool random_plc = true;  // false: program start and prompt M acknowledgements only
+  // Random insert stop commands (ISC-1 .. ISC-9) from the PLC, on a random
+  // stream of their own: false runs every seed exactly as before them.
+  bool insert_stops = true;
   // Called after every step (the bench's --trace).
   std::function<void(int64_t cycle, const cnc::Channel& channel, const HliControl& control)> observer;
   // Instead of the generated program, this text (a shrunk one, the bench's
@@ -84,6 +87,7 @@ struct Failure {
 
 struct PlcCounts {
   int64_t feedhold_edges = 0, override_changes = 0, ddtg_edges = 0, backward_toggles = 0, m_acks = 0;
+  int64_t insert_commands = 0, insert_stops = 0;  // ISC: commands written with the semaphore, stops continued
 };
 
 struct FuzzRun {
