@@ -295,3 +295,23 @@ TEST_CASE("ISC-3 ISC-6 ISC-9 KRN-5 known bug: random insert stop commands with b
     CHECK(hil::fuzz::run_channel_fuzz_isolated(seed, options).passed());
   }
 }
+
+TEST_CASE("KRN-3 known bug: override changes while braking through a curvature step for a corner pass the corner",
+          "[.][known-bug]") {
+  // E, cnc/path/look_ahead: the override toggled between 100 and 120 %
+  // while the path braked along the arc N70 into the 0.029 mm line N80 for
+  // the exact-stop corner N80/N90; the curvature step turned limiting
+  // (a = 0 required there), which the braking path could not keep, and it
+  // reached the corner at 2.6 mm/s: 1.5e6 mm/s^3 on X (fuzz seed 2042447,
+  // minimized; seed 1001167 alike).
+  fuzz::FuzzOptions options;
+  options.program_text =
+      "%fuzz8188478744651035126\nN20 G90 G01 F1358\nN30 G03 Z0 I-1.477830829 J-1.879095967\n"
+      "N40 G02 X0.186297093 Y0.123895533 I-0.027777773 J0.243780164\nN50 G01 X4.434297093 F294\n"
+      "N60 G03 X4.837297093 Y0.526895533 I0 J0.403\nN70 G03 X-3.366702907 I-4.102 J0\nN80 G01 Y0.497895533\n"
+      "N90 G01 X-3.061702907 Y0.497895533\nN100 G03 X-0.853702907 Y2.705895533 I0 J2.208\nN790 M30\n";
+  options.chaos_cycles = 249539;
+  options.insert_stops = false;
+  const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(2042447, options);
+  for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+}
