@@ -86,10 +86,13 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   }
   const StopPoint stop = leave_front(t);
   const size_t k = stop.block;
-  // The front segment ends where block k ends in the old direction.
-  const double along_k = direction_ == TravelDirection::forward
-                             ? PathSegment(blocks_[k].motion, machine_).length() - stop.front_length + stop.s
-                             : stop.front_length - stop.s;
+  // Where on a full circle k (its start is its end) the path stands: a
+  // part of block k runs from a lower place on it to a higher one forward,
+  // the other way backward, whether it ends where k ends or at a split.
+  const bool at_part_start = stop.s < stop.front_length / 2;
+  const double along_k = (direction_ == TravelDirection::forward) == at_part_start
+                             ? 0.0
+                             : PathSegment(blocks_[k].motion, machine_).length();
   direction_ = direction_ == TravelDirection::forward ? TravelDirection::backward : TravelDirection::forward;
   const bool backward = direction_ == TravelDirection::backward;
   if (backward) {
