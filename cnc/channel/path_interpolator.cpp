@@ -250,19 +250,26 @@ void PathInterpolator::begin_front(const MotionState& state, double t0) {
 // where the look-ahead has seen one block more, and when the velocity
 // factor changes.
 void PathInterpolator::plan(const MotionState& state, double t0) {
-  const Stretch st = look_ahead_.stretch(state.v);
-  double length = st.length, v_end = st.v_end;
-  if (stop_at_) {
-    // Where the path stands if it brakes now, on the front block's scale.
-    const double braked = velocity_change(state.v, state.a, 0, st.lim, st.slope).end(state).p;
-    stop_at_ = std::max(*stop_at_, travelled_before_front_ + braked);
-    const double to_stop = *stop_at_ - travelled_before_front_;
-    if (to_stop <= length) {
-      length = to_stop;
-      v_end = 0;
+  // A transition that turned limiting while the path brakes through it (an
+  // override change) may demand what the braking path cannot meet; then
+  // the plan runs through it to the next limiting one, as it did before.
+  for (size_t through = 0;; ++through) {
+    const Stretch st = look_ahead_.stretch(state.v, through);
+    double length = st.length, v_end = st.v_end;
+    if (stop_at_) {
+      // Where the path stands if it brakes now, on the front block's scale.
+      const double braked = velocity_change(state.v, state.a, 0, st.lim, st.slope).end(state).p;
+      stop_at_ = std::max(*stop_at_, travelled_before_front_ + braked);
+      const double to_stop = *stop_at_ - travelled_before_front_;
+      if (to_stop <= length) {
+        length = to_stop;
+        v_end = 0;
+      }
     }
+    plan_ = block_profile(state, length, v_end, st.lim, st.slope);
+    if (plan_.end().v <= v_end + 1e-9 * (1 + v_end)) break;
+    if (look_ahead_.stretch(state.v, through + 1).length <= st.length) break;  // nothing to run through
   }
-  plan_ = block_profile(state, length, v_end, st.lim, st.slope);
   plan_start_cycles_ = t0 / machine_.cycle_time_s();
 }
 

@@ -300,9 +300,32 @@ TEST_CASE("ISC-3 DPS-1 known bug: an insert stop at a block end stops 1.5e-6 mm 
   CHECK(hil::fuzz::run_channel_fuzz_isolated(170, options).passed());
 }
 
+TEST_CASE("KRN-3 an override change that makes a feed change limiting while the path brakes through it",
+          "[channel]") {
+  // Fuzz seed 2087828, minimized: at 117 % the collinear transition
+  // N380/N390 (F13639 -> F14071) is not limiting and the path brakes
+  // through it for the program end; at 104.5 % it is, and the stretch
+  // ended there demanding a = 0 and 18.96 mm/s, which the path (64.7 mm/s,
+  // 1.77 mm before) could not meet: it reached the program end at 50 mm/s
+  // (16,722 mm/s^2). The plan now runs through such a transition.
+  fuzz::FuzzOptions options;
+  options.program_text =
+      "%fuzz14128741101328428511\nN50 G01 X-16.2 Y8.1 Z-16.2 F12673\nN120 G01 X-55.8 Y27.9 Z-55.8\n"
+      "N130 G01 X-25.2 Y12.6 Z-25.2\nN150 G01 X-24.892676763 Y12 F13639\nN190 G01 X-23.692676763 Y9.6\n"
+      "N200 G01 X-23.992676763 Y10.2\nN260 G01 Y12.78\nN270 G01 Y9.684 Z-25.2\n"
+      "N280 G01 X-23.399288143 Y10.082899011 Z-25.2\nN370 G01 X-20.879288143 Y12.602899011 Z-22.68\n"
+      "N380 G01 X-23.399288143 Y10.082899011 Z-25.2\nN390 G01 X-23.619288143 Y9.862899011 Z-25.42 F14071\n"
+      "N1420 M30\n";
+  options.chaos_cycles = 18428;
+  options.insert_stops = false;
+  const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(2087828, options);
+  for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+}
+
 TEST_CASE("KRN-3 known bug: override changes while braking through a curvature step for a corner pass the corner",
           "[.][known-bug]") {
-  // E, cnc/path/look_ahead: the override toggled between 100 and 120 %
+  // E, cnc/path/look_ahead (the curvature-step part; feed changes are
+  // fixed, test above): the override toggled between 100 and 120 %
   // while the path braked along the arc N70 into the 0.029 mm line N80 for
   // the exact-stop corner N80/N90; the curvature step turned limiting
   // (a = 0 required there), which the braking path could not keep, and it
