@@ -59,8 +59,8 @@ std::optional<Motion> rest_of_motion(const Motion& motion, const std::vector<dou
     if (rest > shortest_part_mm) return backward ? reversed(motion_until(motion, point)) : motion_from(motion, point);
   }
   if (distance(point, target) <= nothing_left_mm) return std::nullopt;
-  Motion line = motion;
-  line.type = MotionType::linear;
+  Motion line = motion;  // G00 stays G00: with no F programmed a G01 line would not move
+  if (line.type != MotionType::rapid) line.type = MotionType::linear;
   line.start = point;
   line.end = target;
   return line;
