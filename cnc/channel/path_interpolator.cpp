@@ -90,9 +90,7 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   // part of block k runs from a lower place on it to a higher one forward,
   // the other way backward, whether it ends where k ends or at a split.
   const bool at_part_start = stop.s < stop.front_length / 2;
-  const double along_k = (direction_ == TravelDirection::forward) == at_part_start
-                             ? 0.0
-                             : PathSegment(blocks_[k].motion, machine_).length();
+  const bool at_end_of_k = (direction_ == TravelDirection::forward) != at_part_start;
   direction_ = direction_ == TravelDirection::forward ? TravelDirection::backward : TravelDirection::forward;
   const bool backward = direction_ == TravelDirection::backward;
   if (backward) {
@@ -106,7 +104,7 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   }
   // What is left of block k the new way: back to its start, or on to its end
   // (the front may be a part of block k, split at an insert stop mark).
-  if (const auto rest = rest_of_motion(blocks_[k].motion, stop.position, backward, machine_, along_k))
+  if (const auto rest = rest_of_motion(blocks_[k].motion, stop.position, backward, machine_, at_end_of_k))
     push(k, *rest, blocks_[k].slope);
   cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
   refill();
@@ -253,8 +251,8 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
   // A transition that turned limiting while the path brakes through it (an
   // override change) may demand what the braking path cannot meet; then
   // the plan runs through it to the next limiting one, as it did before.
-  for (size_t through = 0;; ++through) {
-    const Stretch st = look_ahead_.stretch(state.v, through);
+  Stretch st = look_ahead_.stretch(state.v);
+  for (size_t through = 1;; ++through) {
     double length = st.length, v_end = st.v_end;
     if (stop_at_) {
       // Where the path stands if it brakes now, on the front block's scale.
@@ -268,7 +266,9 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
     }
     plan_ = block_profile(state, length, v_end, st.lim, st.slope);
     if (plan_.end().v <= v_end + 1e-9 * (1 + v_end)) break;
-    if (look_ahead_.stretch(state.v, through + 1).length <= st.length) break;  // nothing to run through
+    Stretch longer = look_ahead_.stretch(state.v, through);
+    if (longer.length <= st.length) break;  // nothing to run through
+    st = longer;
   }
   plan_start_cycles_ = t0 / machine_.cycle_time_s();
 }

@@ -19,12 +19,11 @@ constexpr double shortest_part_mm = 1e-5;
 constexpr double nothing_left_mm = 1e-9;
 
 // How far along the motion the point lies from its start; none if it is off it.
-std::optional<double> along(const Motion& motion, const std::vector<double>& point, const MachineConfig& machine,
-                            double along_hint) {
-  const PathSegment whole(motion, machine);
+std::optional<double> along(const Motion& motion, const PathSegment& whole, const std::vector<double>& point,
+                            const MachineConfig& machine, bool at_end_if_closed) {
   const bool at_start = distance(point, motion.start) <= on_motion_mm;
   const bool at_end = distance(point, motion.end) <= on_motion_mm;
-  if (at_start && at_end) return along_hint < whole.length() / 2 ? 0.0 : whole.length();
+  if (at_start && at_end) return at_end_if_closed ? whole.length() : 0.0;
   if (at_start) return 0.0;
   if (at_end) return whole.length();
   const double s = PathSegment(motion_until(motion, point), machine).length();
@@ -52,10 +51,11 @@ Motion reversed(Motion motion) {
 }
 
 std::optional<Motion> rest_of_motion(const Motion& motion, const std::vector<double>& point, bool backward,
-                                     const MachineConfig& machine, double along_hint) {
+                                     const MachineConfig& machine, bool at_end_if_closed) {
   const std::vector<double>& target = backward ? motion.start : motion.end;
-  if (const std::optional<double> s = along(motion, point, machine, along_hint)) {
-    const double rest = backward ? *s : PathSegment(motion, machine).length() - *s;
+  const PathSegment whole(motion, machine);
+  if (const std::optional<double> s = along(motion, whole, point, machine, at_end_if_closed)) {
+    const double rest = backward ? *s : whole.length() - *s;
     if (rest > shortest_part_mm) return backward ? reversed(motion_until(motion, point)) : motion_from(motion, point);
   }
   if (distance(point, target) <= nothing_left_mm) return std::nullopt;

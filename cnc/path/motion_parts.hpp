@@ -23,9 +23,9 @@ Motion reversed(Motion motion);
 // from a point off the motion (where delete distance to go ended a short
 // cut midway, 50810), are a straight line, so that the path goes on from
 // where it stands whatever it stands on. None where the point is there.
-// On a closed motion (a full circle) its start is its end: `along_hint`,
-// how far from the start the path came, tells which.
+// On a closed motion (a full circle) its start is its end:
+// `at_end_if_closed` tells which.
 std::optional<Motion> rest_of_motion(const Motion& motion, const std::vector<double>& point, bool backward,
-                                     const MachineConfig& machine, double along_hint = 0);
+                                     const MachineConfig& machine, bool at_end_if_closed = false);
 
 }  // namespace hil::cnc

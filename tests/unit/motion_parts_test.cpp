@@ -76,8 +76,8 @@ TEST_CASE("KRN-5 rest_of_motion: on a full circle its start is its end, the hint
   const MachineConfig machine = test::xyz_machine();
   Motion circle = line({10, 0, 0}, {10, 0, 0}, MotionType::arc_ccw);
   circle.center_x = circle.center_y = 0;
-  const auto from_start = rest_of_motion(circle, {10, 0, 0}, false, machine, 0.0);
+  const auto from_start = rest_of_motion(circle, {10, 0, 0}, false, machine, false);
   REQUIRE(from_start);  // the whole circle ahead
   CHECK(from_start->type == MotionType::arc_ccw);
-  CHECK_FALSE(rest_of_motion(circle, {10, 0, 0}, false, machine, 62.8));  // at its end: nothing left
+  CHECK_FALSE(rest_of_motion(circle, {10, 0, 0}, false, machine, true));  // at its end: nothing left
 }
