@@ -99,9 +99,9 @@ int main(int argc, char** argv) {
   app.add_option("--program-kind", kind_name, "all (by seed), mixed, lines, arcs, steps, commands");
   app.add_option("--min-items", options.min_items, "fewest generator items per program")->check(CLI::PositiveNumber);
   app.add_option("--max-items", options.max_items, "most generator items per program")->check(CLI::PositiveNumber);
-  app.add_flag("--avoid-known-bugs", options.avoid_known_channel_bugs,
-               "no delete distance to go edge in backward motion or after 50810 (the unit test's setting)");
   app.add_flag("--quiet-plc", quiet_plc, "no random PLC edges: program start and prompt M acknowledgements only");
+  bool no_insert_stops = false;
+  app.add_flag("--no-insert-stops", no_insert_stops, "no random insert stop commands (ISC): every seed runs as before them");
   app.add_flag("--print-program", print_program, "print the NC program of every failing run (and of a single run)");
   app.add_flag("--trace", trace, "print every cycle (TSV) of the runs");
   app.add_option("--show", max_failures_shown, "failures shown per failing run");
@@ -131,6 +131,7 @@ int main(int argc, char** argv) {
     options.program_text = text.str();
   }
   options.random_plc = !quiet_plc;
+  options.insert_stops = !no_insert_stops;
   if (chaos >= 0) options.chaos_cycles = chaos;
   if (trace) {
     std::printf("cycle\tx\ty\tz\tv_path\tblock_nr\tblock_count\tdps_mm\tstate\tbackward\tshort_cut\tm_request\t"
@@ -152,7 +153,7 @@ int main(int argc, char** argv) {
 
   const auto t0 = std::chrono::steady_clock::now();
   int64_t cycles = 0, failed_runs = 0, failures = 0;
-  int64_t with_short_cut = 0, with_backward = 0, with_m = 0, with_random_plc = 0;
+  int64_t with_short_cut = 0, with_backward = 0, with_m = 0, with_random_plc = 0, insert_commands = 0, insert_stops = 0;
   std::map<std::string, int64_t> by_invariant, failed_by_kind, runs_by_kind;
   for (int64_t i = 0; i < runs; ++i) {
     const uint64_t s = seed + static_cast<uint64_t>(i);
@@ -162,6 +163,8 @@ int main(int argc, char** argv) {
     with_short_cut += run.short_cut;
     with_backward += run.backward;
     with_m += run.m_output;
+    insert_commands += run.plc.insert_commands;
+    insert_stops += run.plc.insert_stops;
     with_random_plc += run.chaos_cycles > 0;
     if (runs == 1 && print_program && !trace) std::printf("%s", run.program.text.c_str());
     if (run.passed()) continue;
@@ -178,9 +181,8 @@ int main(int argc, char** argv) {
     }
     if (show_events)
       for (const std::string& e : run.event_log) std::printf("  event %s\n", e.c_str());
-    std::printf("  reproduce: channel_fuzz --seed %llu --runs 1 --program-kind %s%s%s --print-program\n",
-                static_cast<unsigned long long>(s), to_string(run.kind), quiet_plc ? " --quiet-plc" : "",
-                options.avoid_known_channel_bugs ? " --avoid-known-bugs" : "");
+    std::printf("  reproduce: channel_fuzz --seed %llu --runs 1 --program-kind %s%s --print-program\n",
+                static_cast<unsigned long long>(s), to_string(run.kind), quiet_plc ? " --quiet-plc" : "");
     if (print_program && runs > 1) std::printf("%s", run.program.text.c_str());
     if (shrink) minimize(run, options, !no_fork);
     std::fflush(stdout);
@@ -194,6 +196,9 @@ int main(int argc, char** argv) {
   std::printf("runs with random PLC %lld, with a short cut %lld, with backward motion %lld, with M functions %lld\n",
               static_cast<long long>(with_random_plc), static_cast<long long>(with_short_cut),
               static_cast<long long>(with_backward), static_cast<long long>(with_m));
+  std::printf("insert stop commands %lld, insert / M00 / M01 stops continued %lld%s\n",
+              static_cast<long long>(insert_commands), static_cast<long long>(insert_stops),
+              options.insert_stops ? "" : " (--no-insert-stops)");
   std::printf("failed runs: %lld, failures: %lld\n", static_cast<long long>(failed_runs),
               static_cast<long long>(failures));
   for (const auto& [kind, n] : runs_by_kind)

@@ -3,6 +3,7 @@
 // library fills HliState, the PLC simulator writes HliControl; the nodes
 // translate both to and from the LCM types hli_state_t / hli_control_t.
 // Their fields are listed once, in hli_table.hpp.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -21,7 +22,8 @@ bool parse_channel_state(const std::string& text, ChannelState& state);
 // HLI_SC_* bits of stop_conditions_r (TF5200_insert_stop_cmd.txt, table of
 // stop conditions). The channel sets FEEDHOLD, PLC_ACKNOWLEDGE and
 // WAIT_TECHNO_ACK (an M function waits), OVERRIDE_ZERO, DELAY_TIME,
-// IPO_INPUT_EMPTY and CHANNEL_ERROR (cnc/channel/path_hold.cpp).
+// IPO_INPUT_EMPTY, CHANNEL_ERROR, M00_OR_M01 with M0_STOP / M1_STOP and
+// INSERT_STOP_AT_DIST (cnc/channel/path_hold.cpp).
 namespace stop_condition {
 constexpr int32_t feedhold = 0x0001;               // HLI_SC_FEEDHOLD: path feed stop
 constexpr int32_t vfg = 0x0002;                    // HLI_SC_VFG: no axis-specific feed enable
@@ -58,6 +60,23 @@ using ControlUnitUns32 = ControlUnit<uint32_t>;             // MC_CONTROL_UNS32_
 using ControlUnitState = ControlUnitStateOf<bool>;
 using ControlUnitValueState = ControlUnitStateOf<int32_t>;
 using ControlUnitUns32State = ControlUnitStateOf<uint32_t>;
+
+// The insert command unit (ISC-1, ISC-2). position_at_next_stop holds the
+// first three axes (ARRAY[0..HLI_CS_AXIS_MAXIDX] OF DINT in the text).
+using StopPositions = std::array<int32_t, 3>;
+struct InsertCmdCommand {
+  HIL_RECORD(InsertCmdCommand, HLI_INSERT_CMD_COMMAND_FIELDS)
+};
+struct InsertCmdState {
+  InsertCmdState() { distance_of_next_stop = -1; }
+  HIL_RECORD(InsertCmdState, HLI_INSERT_CMD_STATE_FIELDS)
+};
+struct InsertCmdUnit {
+  HIL_RECORD(InsertCmdUnit, HLI_INSERT_CMD_UNIT_FIELDS)
+};
+struct InsertCmdUnitState {
+  HIL_RECORD(InsertCmdUnitState, HLI_INSERT_CMD_UNIT_STATE_FIELDS)
+};
 
 // Override values are in 0.1 % (1000 = 100 %).
 constexpr int32_t override_full = 1000;

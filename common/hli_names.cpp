@@ -1,5 +1,8 @@
 #include "hli_names.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 #include <type_traits>
 #include <utility>
@@ -16,13 +19,30 @@ constexpr const char* tf5200_type() {
   if constexpr (std::is_same_v<T, bool>) return "BOOL";
   else if constexpr (std::is_same_v<T, int32_t>) return "DINT";
   else if constexpr (std::is_same_v<T, uint32_t>) return "UDINT";
+  else if constexpr (std::is_same_v<T, uint16_t>) return "UINT";
   else if constexpr (std::is_same_v<T, int64_t>) return "LINT";
-  else static_assert(no_tf5200_type<T>, "a named HLI field must be bool, int32_t, uint32_t or int64_t");
+  else if constexpr (std::is_same_v<T, double>) return "LREAL";
+  else static_assert(no_tf5200_type<T>, "a named HLI field must be bool, int32_t, uint32_t, uint16_t, int64_t or double");
 }
+
+// An LREAL of a unit (0.1 um lengths of the insert command) is named with
+// whole values: read rounded to the nearest 0.1 um.
+constexpr int64_t lreal_limit = int64_t{1} << 53;
 
 // `reach` takes a Record (const or not) to the field.
 template <typename Record, typename Leaf, typename Reach>
 HliField<Record> make_field(std::string name, Reach reach) {
+  if constexpr (std::is_same_v<Leaf, double>)
+    return {std::move(name),
+            tf5200_type<Leaf>(),
+            -lreal_limit,
+            lreal_limit,
+            [reach](const Record& record) {
+              const double v = reach(record);
+              return std::isfinite(v) ? std::llround(std::clamp(v, -1e18, 1e18)) : int64_t{0};
+            },
+            [reach](Record& record, int64_t value) { reach(record) = static_cast<double>(value); }};
+  else
   return {std::move(name),
           tf5200_type<Leaf>(),
           std::numeric_limits<Leaf>::min(),
@@ -34,13 +54,29 @@ HliField<Record> make_field(std::string name, Reach reach) {
 // Walks the table from Root down to `Struct` (reached by `reach`); every
 // whole-number field gets its dotted name. The others (doubles, the channel
 // state, the axis arrays) have keys of their own in scenarios.
+template <typename T>
+struct is_std_array : std::false_type {};
+template <typename T, size_t N>
+struct is_std_array<std::array<T, N>> : std::true_type {};
+
 template <typename Root, typename Struct, typename Reach>
 void add_fields(std::vector<HliField<Root>>& out, const std::string& prefix, Reach reach) {
   Struct::fields([&](const char* name, auto member) {
     using Leaf = member_t<decltype(member)>;
     auto reach_leaf = [reach, member](auto& root) -> auto& { return reach(root).*member; };
-    if constexpr (is_record_v<Leaf>) add_fields<Root, Leaf>(out, prefix + name + ".", reach_leaf);
-    else if constexpr (std::is_integral_v<Leaf>) out.push_back(make_field<Root, Leaf>(prefix + name, reach_leaf));
+    if constexpr (is_record_v<Leaf>) {
+      add_fields<Root, Leaf>(out, prefix + name + ".", reach_leaf);
+    } else if constexpr (is_std_array<Leaf>::value) {  // position_at_next_stop[0] ...
+      using Element = typename Leaf::value_type;
+      for (size_t i = 0; i < std::tuple_size_v<Leaf>; ++i)
+        out.push_back(make_field<Root, Element>(prefix + name + "[" + std::to_string(i) + "]",
+                                                [reach_leaf, i](auto& root) -> auto& { return reach_leaf(root)[i]; }));
+    } else if constexpr (std::is_integral_v<Leaf>) {
+      out.push_back(make_field<Root, Leaf>(prefix + name, reach_leaf));
+    } else if constexpr (std::is_same_v<Leaf, double> && !std::is_same_v<Struct, Root>) {
+      // A unit's LREAL; the record's own (dist_prog_start, path_velocity) have keys of their own.
+      out.push_back(make_field<Root, Leaf>(prefix + name, reach_leaf));
+    }
   });
 }
 

@@ -19,6 +19,27 @@
   X(bool, request_r)             \
   X(State, state_r)
 
+// The insert command unit (TF5200_insert_stop_cmd.txt, ISC-1, ISC-2):
+// MC_CONTROL_INSERT_CMD_UNIT as the PLC writes it, HLI_INSERT_CMD_COMMAND,
+// and the CNC's answer, HLI_INSERT_CMD_STATE. UINT is uint16_t, LREAL double.
+#define HLI_INSERT_CMD_COMMAND_FIELDS(X)                                            \
+  X(double, dist_or_pos)      /* 0.1 um: distance (axis_nr 0) or axis position */ \
+  X(uint16_t, rel_abs_mode)   /* 0 relative iterative, 1 absolute, 2 relative once */ \
+  X(uint16_t, axis_nr)        /* 0 DISTANCE mode; > 0 POSITION mode, logical axis */ \
+  X(uint16_t, m_function_nr)  /* 0 M00, 1 M01, > 1 M<n> (MVS_SVS) */                 \
+  X(int32_t, add_nr)          /* the M function's additional value */
+#define HLI_INSERT_CMD_STATE_FIELDS(X)                                                  \
+  X(double, distance_of_next_stop) /* 0.1 um dist_prog_start at the next stop; -1 not found */ \
+  X(StopPositions, position_at_next_stop) /* 0.1 um: X Y Z (DISTANCE) or [0] the axis (POSITION) */ \
+  X(int32_t, state)                /* 0 no stop commanded, 1 commanded, not reached */
+#define HLI_INSERT_CMD_UNIT_FIELDS(X) \
+  X(InsertCmdCommand, command_w)      \
+  X(bool, enable_w)                   \
+  X(bool, semaphor_rw) /* consumption: the PLC sets it with new data, the CNC clears it */
+#define HLI_INSERT_CMD_UNIT_STATE_FIELDS(X) \
+  X(bool, semaphor_rw) /* the CNC's side: FALSE once it has read command_w */ \
+  X(InsertCmdState, state_r)
+
 // PLC -> CNC (hli_control_t), applied by the CNC one cycle later (RIG-6).
 #define HLI_CONTROL_UNITS(X)                                                           \
   /* Rising edge of command_w while enable_w starts the NC program. */                 \
@@ -36,7 +57,13 @@
   X(ControlUnitBool, m_function_ack)                                                   \
   /* Backward motion on the path (bahn_mc_control.backward_motion, KRN-5), a level; */ \
   /* without P-STUP-00033 a request holds the path until withdrawn (DDTG-10). */       \
-  X(ControlUnitBool, backward_motion)
+  X(ControlUnitBool, backward_motion)                                                  \
+  /* Insert stop marks (ISC-1): command_w read when semaphor_rw while enable_w. */     \
+  X(InsertCmdUnit, insert_cmd)                                                         \
+  /* Rising edge of command_w while enable_w leaves an M00 / M01 stop (ISC-5). */      \
+  X(ControlUnitBool, continue_motion)                                                  \
+  /* command_w while enable_w: M01 stops (optional stop, ISC-5). */                    \
+  X(ControlUnitBool, m01_stop_enable)
 
 // CNC -> PLC (hli_state_t), once per cycle. HLI lengths in 0.1 um.
 // block_nr_r and block_count_r are UDINT in the texts: int64_t holds them all.
@@ -60,4 +87,8 @@
   /* (MVS_SVS); its number. */                                                       \
   X(bool, m_function_request_r)                                                      \
   X(int32_t, m_function_nr_r)                                                        \
-  X(ControlUnitState, backward_motion) /* state_r: moving backward */
+  X(int32_t, m_function_add_nr_r)  /* its additional value (insert stop add_nr) */   \
+  X(ControlUnitState, backward_motion) /* state_r: moving backward */                \
+  X(InsertCmdUnitState, insert_cmd)    /* ISC-1, ISC-2 */                            \
+  X(ControlUnitState, continue_motion) /* state_r: the edge was taken */             \
+  X(ControlUnitState, m01_stop_enable) /* state_r: M01 stops */

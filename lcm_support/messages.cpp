@@ -1,5 +1,6 @@
 #include "messages.hpp"
 
+#include <iterator>
 #include <limits>
 #include <type_traits>
 
@@ -32,6 +33,9 @@ void copy(const From& from, To& to) {
     set_lengths(to);
   } else if constexpr (is_record_v<To>) {
     To::template fields<From>([&](const char*, auto record, auto twin) { copy(from.*twin, to.*record); });
+  } else if constexpr (std::is_array_v<From> || std::is_array_v<To>) {  // std::array <-> a fixed LCM array
+    static_assert(std::size(From{}) == std::size(To{}), "an HLI array and its LCM twin must have one length");
+    for (size_t i = 0; i < std::size(from); ++i) copy(from[i], to[i]);
   } else {
     static_assert(holds_every_value<From, To>() || holds_every_value<To, From>(),
                   "an HLI field and its LCM twin must hold the same values: see common/hli_table.hpp");

@@ -47,7 +47,9 @@ void Participant::announce_end(int64_t cycle, int32_t verdicts) {
   announce(hil::participant_t::PHASE_RUN_END, cycle, verdicts);
 }
 
-void Participant::announce_alive() { announce(hil::participant_t::PHASE_ALIVE, 0, 0); }
+void Participant::announce_alive(int64_t recorded_cycle) {
+  announce(hil::participant_t::PHASE_ALIVE, recorded_cycle, 0);
+}
 
 bool Participant::wait_for_start(std::chrono::milliseconds timeout) {
   using clock = std::chrono::steady_clock;

@@ -25,8 +25,9 @@ class Participant {
   // Announces this node's own end with what its inbox refused (and, from
   // plc_sim, how many verdicts it published); the logger waits for it.
   void announce_end(int64_t cycle, int32_t verdicts = 0);
-  // The logger's heartbeat: the CNC stops the run if it falls silent.
-  void announce_alive();
+  // The logger's heartbeat, with the last cycle it recorded: the CNC stops
+  // the run if it falls silent, and waits while it lags behind.
+  void announce_alive(int64_t recorded_cycle);
 
   bool started() const { return started_; }
   bool ended() const { return ended_; }

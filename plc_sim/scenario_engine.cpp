@@ -17,6 +17,9 @@ ScenarioEngine::ScenarioEngine(const Scenario& scenario)
 
 const HliControl& ScenarioEngine::cycle(const HliState& state) {
   control_.cycle = state.cycle;
+  // semaphor_rw is one variable the PLC raises and the CNC clears (ISC-1):
+  // the PLC's copy follows the CNC's once it has answered.
+  control_.insert_cmd.semaphor_rw = state.insert_cmd.semaphor_rw;
   // The PLC's M function handling: acknowledge with a one-cycle pulse.
   if (m_function_ack_cycles_ > 0) {
     ControlUnitBool& ack = control_.m_function_ack;

@@ -10,7 +10,7 @@ namespace hil::cnc {
 
 Channel::Channel(MachineConfig machine, std::string nc_program)
     : machine_(std::move(machine)), nc_program_(std::move(nc_program)), path_(machine_, *this),
-      feed_(machine_.override_max_percent), ddtg_(machine_), backward_(machine_) {
+      feed_(machine_.override_max_percent), ddtg_(machine_), backward_(machine_), insert_(machine_) {
   for (const AxisConfig& axis : machine_.axes) hli_.axis_name.push_back(axis.name);
   hli_.axis_position_r.assign(machine_.axes.size(), 0);
   hli_.stop_conditions_r = stop_condition::ipo_input_empty;
@@ -25,7 +25,7 @@ bool Channel::finished() const {
 void Channel::step(int64_t cycle, const HliControl& control) {
   cycle_ = cycle;
   apply_control(control);
-  if (moving()) run_path(control, static_cast<double>(cycle - start_cycle_) * machine_.cycle_time_s());
+  if (moving()) run_path(control, time_s());
   write_state();
 }
 
@@ -34,6 +34,11 @@ void Channel::apply_control(const HliControl& control) {
   const bool backward_changed = backward_.apply(control.backward_motion, hli_, events_);
   if (feed_changed || backward_changed) update_hold();
   if (ddtg_.apply(control, hli_.channel_state == ChannelState::active, hli_, events_)) update_hold();
+  if (insert_.take(control.insert_cmd, hli_)) update_hold();
+  if (programmed_stop_.apply(control, hli_)) {  // continue motion (ISC-5)
+    if (insert_.at_mark()) leave_insert_mark(time_s());
+    update_hold();
+  }
   apply_program_start(control.program_start);
 }
 
@@ -62,17 +67,52 @@ void Channel::start_program() {
   for (Event& warning : warnings) events_.raise(std::move(warning));
   start_cycle_ = cycle_;
   hli_.channel_state = ChannelState::active;
+  if (insert_.pending()) insert_.set_pending(path_, 0, distance_mm(), events_);  // commanded before the start (ISC-6)
   path_.go_on_from_standstill(0);
+  update_hold();
   interpolate(0);
 }
 
 void Channel::run_path(const HliControl& control, double t) {
   if (actions_.run(control.m_function_ack, t, hli_)) update_hold();
+  // M<n> of an insert stop mark acknowledged (ISC-5).
+  if (insert_.at_mark() && !programmed_stop_.stopped() && !actions_.waiting()) leave_insert_mark(t);
   interpolate(t);
   const bool standing = path_.standing(t);
   if (error_stop_.stopping()) error_stop_.update(standing);
+  if (insert_.pending() && standing && hli_.channel_state == ChannelState::active) set_insert_command(t);
   if (ddtg_.pending() && standing && hli_.channel_state == ChannelState::active) start_short_cut(t);
-  if (hli_.channel_state == ChannelState::active) change_direction(t, standing);
+  if (hli_.channel_state == ChannelState::active) change_direction(t, path_.standing(t));
+}
+
+double Channel::distance_mm() const { return distance_.value_mm(path_.front_covered()); }
+
+// ISC-6: the path stands (stopped briefly if it moved): the mark is set,
+// and the path goes on to it; one at the current distance is reached now.
+void Channel::set_insert_command(double t) {
+  if (insert_.set_pending(path_, t, distance_mm(), events_)) path_.go_on_from_standstill(t);
+  update_hold();
+  if (insert_.reached(path_, t)) reach_insert_mark(t);
+}
+
+// ISC-5, ISC-7: the mark's M function.
+void Channel::reach_insert_mark(double t) {
+  insert_.begin_stop();
+  const InsertCommand& c = insert_.command();
+  if (c.m_function_nr <= 1) {
+    if (!programmed_stop_.begin(c.m_function_nr)) {  // M01 while m01_stop_enable is not set: on
+      leave_insert_mark(t);
+      return;
+    }
+  } else {
+    actions_.queue_m_function(c.m_function_nr, c.add_nr);
+  }
+  update_hold();
+}
+
+void Channel::leave_insert_mark(double t) {
+  if (insert_.leave(path_, t, distance_mm())) path_.go_on_from_standstill(t);
+  update_hold();
 }
 
 void Channel::interpolate(double t) {
@@ -97,13 +137,19 @@ void Channel::interpolate(double t) {
   if (progress == PathProgress::reached_contour_start)
     events_.raise(events_.at_block(Severity::warning, "backward motion reached the start of the stored contour "
                                                       "(program start, or P-STUP-00033 full); it stands there"));
-  // The program ends once its last M functions and dwells are done; a
-  // decode error stops the channel after every block decoded correctly.
-  if (progress == PathProgress::all_blocks_run && !actions_.waiting() && hli_.channel_state != ChannelState::error)
+  if (hli_.channel_state == ChannelState::active && insert_.reached(path_, t)) reach_insert_mark(t);
+  // The program ends once its last M functions and dwells are done, and no
+  // stop (M00, M01, an insert stop mark at the end) holds it; a decode
+  // error stops the channel after every block decoded correctly.
+  if (progress == PathProgress::all_blocks_run && !actions_.waiting() && !programmed_stop_.stopped() &&
+      !insert_.at_mark() && !insert_.pending() && hli_.channel_state != ChannelState::error)
     hli_.channel_state = decode_failed_ ? ChannelState::error : ChannelState::program_end;
+  if (hli_.channel_state == ChannelState::program_end || hli_.channel_state == ChannelState::error)
+    insert_.program_end();
 }
 
 void Channel::start_short_cut(double t) {
+  insert_.before_short_cut(path_, t, distance_mm());
   const DeleteDistanceToGo::Outcome outcome = ddtg_.start_short_cut(path_, t, events_);
   update_hold();
   switch (outcome) {
@@ -115,6 +161,7 @@ void Channel::start_short_cut(double t) {
 
 void Channel::change_direction(double t, bool standing) {
   if (!backward_.turn_due(path_.direction(), standing, ddtg_.on_short_cut(), ddtg_.pending(), events_)) return;
+  insert_.before_turn(path_, t, distance_mm());  // ISC-9
   if (!path_.turn(t, backward_.stored_blocks())) return;
   update_hold();
   if (path_.empty() && path_.direction() == TravelDirection::backward)
@@ -138,6 +185,8 @@ PathHold Channel::hold() const {
   hold.set(HoldReason::m_function_ack, actions_.waiting_for_acknowledgement());
   hold.set(HoldReason::dwell, actions_.in_dwell());
   hold.set(HoldReason::direction_change, backward_.change_pending(path_.direction()));
+  hold.set(HoldReason::insert_command, insert_.pending() && hli_.channel_state == ChannelState::active);
+  hold.set(HoldReason::programmed_stop, programmed_stop_.stopped());
   return hold;
 }
 
@@ -148,6 +197,11 @@ void Channel::reach_block(const Block& block, bool run_commands) {
   if (!run_commands) return;
   if (actions_.queue(block)) update_hold();
   if (block.distance_prog_start) distance_.apply(*block.distance_prog_start);
+  if (block.programmed_stop && programmed_stop_.begin(*block.programmed_stop)) update_hold();  // M00 / M01
+  if (block.insert_cmd) {  // ISC-8: set where the path stands, at this line
+    insert_.program_command(*block.insert_cmd);
+    update_hold();
+  }
 }
 
 void Channel::write_state() {
@@ -157,10 +211,11 @@ void Channel::write_state() {
   hli_.last_error_id = events_.last_error_id();
   hli_.backward_motion.state_r = path_.direction() == TravelDirection::backward;
   ddtg_.write(hli_);
+  insert_.write(hli_, path_);
   for (size_t i = 0; i < machine_.axes.size(); ++i)
     hli_.axis_position_r[i] = std::llround(setpoints()[i].position * hli_units_per_mm);
   hli_.program_start.state_r = hli_.channel_state == ChannelState::active;
-  hli_.stop_conditions_r = hold().stop_conditions();
+  hli_.stop_conditions_r = hold().stop_conditions() | programmed_stop_.stop_conditions() | insert_.stop_conditions();
   if (hli_.override.state_r == 0) hli_.stop_conditions_r |= stop_condition::override_zero;
   if (hli_.channel_state != ChannelState::active) hli_.stop_conditions_r |= stop_condition::ipo_input_empty;
 }

@@ -9,6 +9,8 @@
 //   synchronous_actions    M functions with acknowledgement, #TIME dwell
 //   distance_from_program_start  DPS-1, DPS-2
 //   drive_error_stop       RIG-3
+//   insert_stop            ISC-1 .. ISC-9 (axis_crossing: POSITION mode)
+//   programmed_stop        M00 / M01, continue motion, m01_stop_enable (ISC-5)
 //   path_hold              why the path holds: velocity factor, stop_conditions_r
 //   path_interpolator      look-ahead, plan, block cursors, travel direction
 #include <cstdint>
@@ -24,9 +26,11 @@
 #include "event.hpp"
 #include "feed_control.hpp"
 #include "hli.hpp"
+#include "insert_stop.hpp"
 #include "machine_config.hpp"
 #include "path_hold.hpp"
 #include "path_interpolator.hpp"
+#include "programmed_stop.hpp"
 #include "rising_edge.hpp"
 #include "synchronous_actions.hpp"
 
@@ -58,11 +62,18 @@ class Channel : private PathObserver {
  private:
   // The phases of a cycle.
   void apply_control(const HliControl& control);
+  double time_s() const { return static_cast<double>(cycle_ - start_cycle_) * machine_.cycle_time_s(); }
   void apply_program_start(const ControlUnitBool& start);
   void run_path(const HliControl& control, double t);
   void interpolate(double t);
   void start_short_cut(double t);
   void change_direction(double t, bool standing);
+  // Insert stop marks (ISC-3 .. ISC-7): a command set where the path
+  // stands, the mark's M function where it is reached, leaving it.
+  void set_insert_command(double t);
+  void reach_insert_mark(double t);
+  void leave_insert_mark(double t);
+  double distance_mm() const;
   void write_state();
 
   void start_program();
@@ -87,6 +98,8 @@ class Channel : private PathObserver {
   SynchronousActions actions_;
   DistanceFromProgramStart distance_;
   DriveErrorStop error_stop_;
+  InsertStop insert_;
+  ProgrammedStop programmed_stop_;
   RisingEdge program_start_;
   bool decode_failed_ = false;
   int64_t start_cycle_ = 0;

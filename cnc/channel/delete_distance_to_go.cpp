@@ -131,10 +131,13 @@ void DeleteDistanceToGo::push(PathInterpolator& path, const StopPoint& stop, siz
                               const std::vector<double>& end, bool rapid) {
   const std::vector<Block>& blocks = path.blocks();
   Motion cut;
-  cut.type = rapid ? MotionType::rapid : MotionType::linear;  // DDTG-2: linear, G00 if the interrupted block was
+  // DDTG-2: linear, at the target block's feed (the F in force there, for a
+  // G00 block too), G00 if the interrupted block was; with no F programmed
+  // at all (G00 blocks only) at rapid.
+  cut.feed = blocks[target].motion.feed > 0 ? blocks[target].motion.feed : blocks[stop.block].motion.feed;
+  cut.type = rapid || !(cut.feed > 0) ? MotionType::rapid : MotionType::linear;
   cut.start = stop.position;
   cut.end = end;
-  cut.feed = blocks[target].motion.feed > 0 ? blocks[target].motion.feed : blocks[stop.block].motion.feed;
   if (!path.push_short_cut(target, cut)) return;
   target_ = target;
   rapid_ = rapid;

@@ -15,6 +15,8 @@ enum class HoldReason : uint8_t {
   m_function_ack,     // an M function waits for the PLC's acknowledgement, MVS_SVS (HLI_SC_PLC_ACKNOWLEDGE, HLI_SC_WAIT_TECHNO_ACK)
   dwell,              // #TIME (HLI_SC_DELAY_TIME)
   direction_change,   // backward motion requested the other way (KRN-5)
+  insert_command,     // an insert stop command stops the path briefly (ISC-6)
+  programmed_stop,    // M00 / M01 stop state, also of an insert stop mark (ISC-5; bits from ProgrammedStop)
   count
 };
 

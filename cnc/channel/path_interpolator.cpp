@@ -10,8 +10,8 @@
 namespace hil::cnc {
 namespace {
 
-// A rest shorter than this is not moved (10 nm): a shorter arc could not be
-// told from a full circle.
+// A part shorter than this is not split off or moved (10 nm): a shorter arc
+// could not be told from a full circle.
 constexpr double shortest_rest_mm = 1e-5;
 
 // Numbers the planner can work with: a finite length and finite limits.
@@ -44,29 +44,30 @@ StopPoint PathInterpolator::leave_front(double t) {
   stop.front_length = front.segment.length();
   stop.s = std::clamp(path_state_at(t).p, 0.0, stop.front_length);
   stop.position = setpoint_positions();
-  stop.on_contour_curve = front.segment.is_contour_curve();
-  stop.front_ends_block = front.ends_block && !stop.on_contour_curve;
-  double partial = 0;
-  if (stop.front_length > 0) {
-    partial = front.segment.covered_distance() * stop.s / stop.front_length;
-    observer_.travelled(direction_sign() * partial);
+  if (front.segment.is_contour_curve()) {
+    stop.curve = front.segment.joint();
+    stop.curve_s = front.segment.curve_position(stop.s);
+    stop.curve_reversed = front.segment.reversed();
   }
-  // Where the stop lies in block k's programmed distance (DPS-1, KRN-6: a
-  // contoured block is several pieces, and a stop inside a curve is off the
-  // programmed line, so the rest's own geometry would not say it).
-  const double done = front_block_done_ + partial;
-  const double origin = programmed_origin(stop.block);
-  stop_programmed_ = direction_ == TravelDirection::forward ? origin + done : origin - done;
-  front_block_done_ = 0;
+  double covered = 0;
+  if (stop.front_length > 0) {
+    covered = front.segment.covered_distance() * stop.s / stop.front_length;
+    observer_.travelled(direction_sign() * covered);
+    covered_before_front_ += covered;
+  }
+  stop.programmed_place = pushed_.front().origin + direction_sign() * (front_done_ + covered);
+  front_done_ = 0;
   travelled_before_front_ += stop.s;
   look_ahead_.clear();
+  pushed_.clear();
   return stop;
 }
 
 bool PathInterpolator::push_short_cut(size_t target, const Motion& cut) {
   PathSegment segment(cut, machine_);
   if (!(segment.length() > 0)) return false;
-  look_ahead_.push(target, std::move(segment), blocks_[target].slope);
+  // Not smoothed, nor the transition after it (DDTG-2).
+  push({target, cut, 0.0, segment.covered_distance(), blocks_[target].slope, std::nullopt});
   return true;
 }
 
@@ -85,79 +86,38 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
     // It stands in block k (at its start, or where a backward short cut
     // found nothing before it, DDTG-6): on along k from there.
     const size_t k = cursors_.last_finished;
-    if (blocks_[k].has_motion) {
-      const Motion rest = motion_from(blocks_[k].motion, setpoint_positions());
-      if (PathSegment(rest, machine_).length() > shortest_rest_mm)
-        look_ahead_.push(k, rest, blocks_[k].slope, false, corner_after(blocks_[k]));
-    }
+    if (blocks_[k].has_motion)
+      if (const auto rest = rest_of_motion(blocks_[k].motion, setpoint_positions(), false, machine_))
+        push(rest_of_block(k, *rest));
     cursors_.next_to_look_ahead = k + 1;
     refill();
     return true;
   }
   const StopPoint stop = leave_front(t);
   const size_t k = stop.block;
-  const double at = stop_programmed_;
+  // Where on a full circle k (its start is its end) the path stands: a
+  // part of block k runs from a lower place on it to a higher one forward,
+  // the other way backward, whether it ends where k ends or at a split.
+  const bool at_part_start = stop.s < stop.front_length / 2;
+  const bool at_end_of_k = (direction_ == TravelDirection::forward) != at_part_start;
   direction_ = direction_ == TravelDirection::forward ? TravelDirection::backward : TravelDirection::forward;
   const bool backward = direction_ == TravelDirection::backward;
-  // What is left of block k the new way: back to its start, or on to its end.
-  const PathSegment whole(blocks_[k].motion, machine_);
-  const double programmed = whole.covered_distance();
-  const double rest = std::clamp(backward ? at : programmed - at, 0.0, programmed);
-  // From a point on a contouring curve (KRN-6), off the programmed motion:
-  // first straight onto the motion where the stop lies in its programmed
-  // distance, then along the motion (an arc from a point off its circle
-  // would blend its radius, and its setpoints would turn where its tangent
-  // does not). The path stands at the joint (a corner).
-  std::vector<double> from = stop.position;
-  std::optional<PathSegment> connector;
-  if (stop.on_contour_curve && programmed > 0) {
-    from = whole.position(std::clamp(whole.length() * at / programmed, 0.0, whole.length()));
-    Motion line = blocks_[k].motion;
-    if (line.type != MotionType::rapid) line.type = MotionType::linear;
-    line.start = stop.position;
-    line.end = from;
-    connector.emplace(line, machine_);
-  }
-  const Motion motion = backward ? reversed(motion_until(blocks_[k].motion, from))
-                                 : motion_from(blocks_[k].motion, from);
   if (backward) {
     size_t i = cursors_.begun, counted = 0;
     while (i > 0 && counted < stored_blocks)
       if (blocks_[--i].has_motion) ++counted;
     cursors_.lowest_stored = i;
-    cursors_.next_backward = k;
-  } else {
-    cursors_.next_to_look_ahead = k + 1;
   }
-  // A front piece that ends where block k ends (every block without
-  // contouring): the way back over block k is what it had covered before
-  // the front and on it, as it always was. Otherwise from the stop's place
-  // in the programmed distance.
-  const double back_over_k = stop.front_ends_block ? whole.length() - stop.front_length + stop.s
-                             : programmed > 0      ? whole.length() * rest / programmed
-                                                   : 0.0;
-  double connector_covered = 0;
-  if (connector && connector->length() > shortest_rest_mm) {
-    connector_covered = std::min(connector->length(), rest);
-    connector->set_covered_distance(connector_covered);
-    look_ahead_.push(k, std::move(*connector), blocks_[k].slope, false, !(back_over_k > shortest_rest_mm));
-  }
-  if (back_over_k > shortest_rest_mm) {
-    // Off a curve, the rest counts the programmed remainder (the block-end
-    // value stays the programmed sum); on the motion, its own length, as it
-    // always did (the stop's place in the plan and the setpoint it left
-    // differ by up to a cycle's motion).
-    std::optional<double> covered;
-    if (stop.on_contour_curve) covered = rest - connector_covered;
-    look_ahead_.push(k, motion, blocks_[k].slope, false, backward ? corner_below(k) : corner_after(blocks_[k]),
-                     covered);
-    rest_block_ = k;
-    // Where its pieces begin in the block's programmed distance.
-    rest_origin_ = stop.on_contour_curve ? at
-                   : backward            ? PathSegment(motion, machine_).covered_distance()
-                                         : programmed - PathSegment(motion, machine_).covered_distance();
-  }
-  cursors_.last_finished = k;  // where the path stands if nothing follows: at block k's start
+  // What is left of block k the new way: back to its start, or on to its end
+  // (the front may be a part of block k, split at an insert stop mark). On a
+  // contouring curve, back along it into the block it came from.
+  size_t on = k;
+  if (stop.curve) on = push_along_curve(stop, stop.curve_reversed);
+  else if (const auto rest = rest_of_motion(blocks_[k].motion, stop.position, backward, machine_, at_end_of_k))
+    push(rest_of_block(k, *rest));
+  if (backward) cursors_.next_backward = on;
+  else cursors_.next_to_look_ahead = on + 1;
+  cursors_.last_finished = on;  // where the path stands if nothing follows: at block k's start
   refill();
   return true;
 }
@@ -165,6 +125,193 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
 void PathInterpolator::refill() {
   if (direction_ == TravelDirection::backward) refill_backward();
   else refill_forward();
+  const bool exhausted = direction_ == TravelDirection::backward
+                             ? cursors_.next_backward <= cursors_.lowest_stored
+                             : cursors_.next_to_look_ahead >= blocks_.size() || cursors_.next_to_look_ahead == invalid_block_;
+  if (exhausted) place_stop_at_end();
+}
+
+PathInterpolator::PushedMotion PathInterpolator::whole_block(size_t k) const {
+  const Block& block = blocks_[k];
+  const double programmed = PathSegment(block.motion, machine_).covered_distance();
+  if (direction_ == TravelDirection::backward)
+    return {k, reversed(block.motion), programmed, programmed, block.slope, corner_out(k)};
+  return {k, block.motion, 0.0, programmed, block.slope, corner_out(k)};
+}
+
+PathInterpolator::PushedMotion PathInterpolator::rest_of_block(size_t k, const Motion& rest) const {
+  const double covered = PathSegment(rest, machine_).covered_distance();
+  const double end = direction_ == TravelDirection::backward ? 0.0 : PathSegment(blocks_[k].motion, machine_).covered_distance();
+  return {k, rest, end - direction_sign() * covered, covered, blocks_[k].slope, corner_out(k)};
+}
+
+Corner PathInterpolator::corner_out(size_t k) const {
+  return direction_ == TravelDirection::backward ? corner_below(k) : corner_after(blocks_[k]);
+}
+
+void PathInterpolator::push(PushedMotion m, bool stop_before) {
+  if (pushed_.empty()) pushed_covered_ = covered_before_front_;
+  const PathSegment segment(m.motion, machine_);
+  const double length = segment.length();
+  if (stop_covered_ && std::isfinite(length)) {
+    const double to_stop = *stop_covered_ - pushed_covered_;
+    const double s = m.covered > 0 ? length * to_stop / m.covered : 0.0;
+    // The part before the stop ends as programmed (a corner there is not
+    // contoured): the path stands on the mark.
+    const std::optional<Corner> ends_at_stop = m.out ? std::optional<Corner>(Corner{}) : std::nullopt;
+    if (s <= shortest_rest_mm) {  // at its start
+      look_ahead_.flush();
+      place_stop(segment.position(0));
+      stop_before = true;
+    } else if (s < length - shortest_rest_mm) {
+      // ISC-3: the block is split where the stop lies; the look-ahead brakes
+      // to v = 0 at the split as before an M function, and the path enters
+      // the second part from standstill.
+      const std::vector<double> point = segment.position(s);
+      const double covered_first = m.covered * s / length;
+      PushedMotion first = m, second = m;
+      first.motion = motion_until(m.motion, point);
+      first.covered = covered_first;
+      first.out = ends_at_stop;
+      second.motion = motion_from(m.motion, point);
+      second.origin = m.origin + direction_sign() * covered_first;
+      second.covered = m.covered - covered_first;
+      hand_over(std::move(first), stop_before);
+      place_stop(point);
+      hand_over(std::move(second), true);
+      return;
+    } else if (s <= length + shortest_rest_mm) {  // at its end
+      const std::vector<double> end = m.motion.end;
+      m.out = ends_at_stop;
+      hand_over(std::move(m), stop_before);
+      place_stop(end);
+      return;
+    }
+  }
+  hand_over(std::move(m), stop_before);
+}
+
+void PathInterpolator::hand_over(PushedMotion m, bool stop_before) {
+  pushed_covered_ += m.covered;
+  if (m.out) {
+    look_ahead_.push(m.block, m.motion, m.slope, stop_before, *m.out, m.covered);
+  } else {
+    PathSegment segment(m.motion, machine_);
+    segment.set_covered_distance(m.covered);
+    look_ahead_.push(m.block, std::move(segment), m.slope, stop_before);
+  }
+  pushed_.push_back(std::move(m));
+}
+
+// KRN-6: the path runs on along the curve it stands on, either way, with
+// each half counting for its own block (DPS-1), and joins the programmed
+// motion where the curve does, tangent and curvature continuous.
+size_t PathInterpolator::push_along_curve(const StopPoint& stop, bool towards_end) {
+  const ContourJoint& j = *stop.curve;
+  if (pushed_.empty()) pushed_covered_ = covered_before_front_;
+  // [from, to] of the curve, run towards its end or its start.
+  const auto hand_over_part = [&](const ContourJoint::Half& half, double from, double to, bool stop_before) {
+    PathSegment piece(stop.curve, from, to, !towards_end, machine_);
+    const Block& block = blocks_[half.block];
+    // For path_ahead() (ISC-4), within PATH_DEV of the curve.
+    Motion chord = block.motion;
+    if (chord.type != MotionType::rapid) chord.type = MotionType::linear;
+    chord.start = piece.position(0);
+    chord.end = piece.end();
+    pushed_covered_ += piece.covered_distance();
+    pushed_.push_back({half.block, chord, 0.0, piece.covered_distance(), block.slope, std::nullopt});
+    look_ahead_.push(half.block, std::move(piece), block.slope, stop_before);
+  };
+  const auto part = [&](const ContourJoint::Half& half, double from, double to) {
+    if (!(to - from > shortest_rest_mm)) return;
+    const double covered = j.covered(from, to);
+    const double to_stop = stop_covered_ ? *stop_covered_ - pushed_covered_ : covered;
+    if (to_stop < covered - shortest_rest_mm) {
+      if (to_stop <= shortest_rest_mm) {  // at its start
+        look_ahead_.flush();
+        place_stop(j.curve->position(towards_end ? from : to));
+        hand_over_part(half, from, to, true);
+        return;
+      }
+      // ISC-3: split where the stop lies (each half covers in proportion).
+      const double at = towards_end ? from + (to - from) * to_stop / covered : to - (to - from) * to_stop / covered;
+      hand_over_part(half, towards_end ? from : at, towards_end ? at : to, false);
+      place_stop(j.curve->position(at));
+      hand_over_part(half, towards_end ? at : from, towards_end ? to : at, true);
+      return;
+    }
+    hand_over_part(half, from, to, false);
+  };
+  const double x = stop.curve_s, split = j.split, length = j.curve->length();
+  if (towards_end) {
+    part(j.before, x, split);
+    part(j.after, std::max(x, split), length);
+  } else {
+    part(j.after, split, x);
+    part(j.before, 0, std::min(x, split));
+  }
+  const ContourJoint::Half& last = towards_end ? j.after : j.before;
+  const std::vector<double> joint_point = j.curve->position(towards_end ? length : 0.0);
+  const bool backward = direction_ == TravelDirection::backward;
+  if (const auto rest = rest_of_motion(blocks_[last.block].motion, joint_point, backward, machine_))
+    push(rest_of_block(last.block, *rest));
+  return last.block;
+}
+
+void PathInterpolator::place_stop(std::vector<double> position) {
+  stop_at_ = travelled_before_front_ + look_ahead_.path_length();
+  placed_stop_ = PlacedStop{std::move(position), pushed_covered_ - stop_covered_from_};
+  stop_covered_.reset();
+  replan_ = true;
+}
+
+void PathInterpolator::place_stop_at_end() {
+  if (!stop_covered_) return;
+  if (pushed_.empty()) {
+    pushed_covered_ = covered_before_front_;
+    place_stop(setpoint_positions());
+  } else {
+    place_stop(pushed_.back().motion.end);
+  }
+}
+
+void PathInterpolator::restart_here(double t) {
+  const size_t k = look_ahead_.front().block_index;
+  // The front motion and the parts of the same block after it (a split).
+  std::vector<PushedMotion> parts;
+  for (const PushedMotion& m : pushed_) {
+    if (m.block != k) break;
+    parts.push_back(m);
+  }
+  const StopPoint stop = leave_front(t);
+  const PushedMotion& front = parts.front();
+  const double left = front.covered - direction_sign() * (stop.programmed_place - front.origin);
+  if (stop.curve) {
+    const size_t on = push_along_curve(stop, !stop.curve_reversed);  // with the rest of its block
+    if (direction_ == TravelDirection::backward) cursors_.next_backward = on;
+    else cursors_.next_to_look_ahead = on + 1;
+    refill();
+    return;
+  }
+  if (left > shortest_rest_mm) {
+    // What is left of the front by its programmed distance: an arc's rest
+    // from its end point would be a full circle.
+    PushedMotion rest = front;
+    rest.motion = motion_from(front.motion, stop.position);
+    rest.origin = stop.programmed_place;
+    rest.covered = left;
+    push(std::move(rest));
+  } else if (parts.size() == 1) {
+    // Nothing is left of block k: it is finished, as finish_front() would
+    // have it (the cursors say where the path stands, KRN-5).
+    observer_.finish_block(k);
+    if (direction_ == TravelDirection::forward) cursors_.next_to_run = std::max(cursors_.next_to_run, k + 1);
+    cursors_.last_finished = k;
+  }
+  for (size_t i = 1; i < parts.size(); ++i) push(parts[i]);
+  if (direction_ == TravelDirection::backward) cursors_.next_backward = k;
+  else cursors_.next_to_look_ahead = k + 1;
+  refill();
 }
 
 void PathInterpolator::refill_forward() {
@@ -186,7 +333,7 @@ void PathInterpolator::refill_forward() {
       look_ahead_.flush();
       return;
     }
-    look_ahead_.push(next, block.motion, block.slope, stop_before, corner_after(block));
+    push(whole_block(next), stop_before);
   }
   if (next >= blocks_.size()) look_ahead_.flush();
 }
@@ -195,18 +342,9 @@ void PathInterpolator::refill_backward() {
   while (!look_ahead_.full() && cursors_.next_backward > cursors_.lowest_stored) {
     const size_t i = --cursors_.next_backward;
     if (!blocks_[i].has_motion) continue;
-    look_ahead_.push(i, reversed(blocks_[i].motion), blocks_[i].slope, false, corner_below(i));
+    push(whole_block(i));
   }
   if (cursors_.next_backward <= cursors_.lowest_stored) look_ahead_.flush();
-}
-
-// Forward coordinate in block k's programmed distance where its pieces in
-// the look-ahead begin: a rest pushed by turn() begins where the path
-// turned, a whole block at its start (forward) or end (backward).
-double PathInterpolator::programmed_origin(size_t k) const {
-  if (rest_block_ == k) return rest_origin_;
-  if (direction_ == TravelDirection::forward) return 0;
-  return PathSegment(blocks_[k].motion, machine_).covered_distance();
 }
 
 // Backward (KRN-5, KRN-6): the path leaves block i into the motion block
@@ -224,7 +362,7 @@ void PathInterpolator::begin_front(const MotionState& state, double t0) {
   const size_t index = look_ahead_.front().block_index;
   run_blocks_without_motion(index);
   const bool first_time = direction_ == TravelDirection::forward && index >= cursors_.begun;
-  // Once per block, at its first piece (contoured blocks are several, KRN-6).
+  // Once per motion, at its first piece (contoured blocks are several, KRN-6).
   if (look_ahead_.front().begins_block)
     observer_.reach_block(blocks_[index], first_time);  // its M functions go out before its motion (MVS_SVS)
   if (first_time) cursors_.begun = index + 1;
@@ -236,29 +374,83 @@ void PathInterpolator::begin_front(const MotionState& state, double t0) {
 // where the look-ahead has seen one block more, and when the velocity
 // factor changes.
 void PathInterpolator::plan(const MotionState& state, double t0) {
-  const Stretch st = look_ahead_.stretch(state.v);
-  double length = st.length, v_end = st.v_end;
-  if (stop_at_) {
-    // Where the path stands if it brakes now, on the front block's scale.
-    const double braked = velocity_change(state.v, state.a, 0, st.lim, st.slope).end(state).p;
-    stop_at_ = std::max(*stop_at_, travelled_before_front_ + braked);
-    const double to_stop = *stop_at_ - travelled_before_front_;
-    if (to_stop <= length) {
-      length = to_stop;
-      v_end = 0;
+  // A transition that turned limiting while the path brakes through it (an
+  // override change) may demand what the braking path cannot meet; then
+  // the plan runs through it to the next limiting one, as it did before.
+  Stretch st = look_ahead_.stretch(state.v);
+  for (size_t through = 1;; ++through) {
+    double length = st.length, v_end = st.v_end;
+    if (stop_at_) {
+      // Where the path stands if it brakes now, on the front block's scale.
+      const double braked = velocity_change(state.v, state.a, 0, st.lim, st.slope).end(state).p;
+      stop_at_ = std::max(*stop_at_, travelled_before_front_ + braked);
+      const double to_stop = *stop_at_ - travelled_before_front_;
+      if (to_stop <= length) {
+        length = to_stop;
+        v_end = 0;
+      }
     }
+    plan_ = block_profile(state, length, v_end, st.lim, st.slope);
+    if (plan_.end().v <= v_end + 1e-9 * (1 + v_end)) break;
+    Stretch longer = look_ahead_.stretch(state.v, through);
+    if (longer.length <= st.length) break;  // nothing to run through
+    st = longer;
   }
-  plan_ = block_profile(state, length, v_end, st.lim, st.slope);
-  plan_start_ = t0;
+  plan_start_cycles_ = t0 / machine_.cycle_time_s();
 }
 
-void PathInterpolator::stop_after(double t, double distance) {
-  stop_at_ = travelled_before_front_ + (look_ahead_.empty() ? 0.0 : path_state_at(t).p) + std::max(distance, 0.0);
+std::vector<Motion> PathInterpolator::path_ahead() const {
+  std::vector<Motion> ahead;
+  bool front = true;
+  for (const PushedMotion& pushed : pushed_) {
+    const Motion& motion = pushed.motion;
+    if (front) {
+      // The rest of the front: nothing at its end point (an arc's rest from
+      // there would be a full circle), all of it at its start.
+      const std::vector<double> here = setpoint_positions();
+      double to_end = 0, to_start = 0;
+      for (size_t i = 0; i < here.size(); ++i) {
+        to_end = std::max(to_end, std::abs(here[i] - motion.end[i]));
+        to_start = std::max(to_start, std::abs(here[i] - motion.start[i]));
+      }
+      if (to_start <= 1e-9) ahead.push_back(motion);
+      else if (to_end > 1e-9) ahead.push_back(motion_from(motion, here));
+      front = false;
+      continue;
+    }
+    ahead.push_back(motion);
+  }
+  if (direction_ == TravelDirection::backward) {
+    for (size_t i = cursors_.next_backward; i-- > cursors_.lowest_stored;)
+      if (blocks_[i].has_motion) ahead.push_back(reversed(blocks_[i].motion));
+  } else {
+    for (size_t i = cursors_.next_to_look_ahead; i < blocks_.size() && i != invalid_block_; ++i)
+      if (blocks_[i].has_motion) ahead.push_back(blocks_[i].motion);
+  }
+  return ahead;
+}
+
+void PathInterpolator::stop_after(double t, double distance, bool rebuild) {
+  placed_stop_.reset();
+  if (!standing(t)) {
+    stop_at_ = travelled_before_front_ + path_state_at(t).p + std::max(distance, 0.0);
+    replan_ = true;
+    return;
+  }
+  stop_at_.reset();
+  stop_covered_from_ = covered_before_front_ + std::abs(front_covered_);
+  if (look_ahead_.empty()) stop_covered_from_ = covered_before_front_;
+  stop_covered_ = stop_covered_from_ + std::max(distance, 0.0);
+  if (!rebuild) return;
+  if (!look_ahead_.empty()) restart_here(t);
+  else if (!blocks_.empty()) refill();
   replan_ = true;
 }
 
 void PathInterpolator::release_stop() {
   stop_at_.reset();
+  stop_covered_.reset();
+  placed_stop_.reset();
   replan_ = true;
 }
 
@@ -271,13 +463,14 @@ bool PathInterpolator::at_stop(double t) const {
 void PathInterpolator::finish_front() {
   const LookAheadBlock& front = look_ahead_.front();
   observer_.travelled(direction_sign() * front.segment.covered_distance());
-  front_block_done_ += front.segment.covered_distance();
+  travelled_before_front_ += front.segment.length();
+  covered_before_front_ += front.segment.covered_distance();
+  front_done_ += front.segment.covered_distance();
   if (front.ends_block) {
     observer_.finish_block(front.block_index);
-    front_block_done_ = 0;
-    if (rest_block_ == front.block_index) rest_block_.reset();
+    pushed_.pop_front();
+    front_done_ = 0;
   }
-  travelled_before_front_ += front.segment.length();
   if (direction_ == TravelDirection::forward)
     cursors_.next_to_run = std::max(cursors_.next_to_run, front.block_index + 1);
   cursors_.last_finished = front.block_index;
@@ -299,8 +492,11 @@ PathProgress PathInterpolator::interpolate(double t) {
   // block end (feed hold, override 0) waits there.
   while (!look_ahead_.empty()) {
     const double length = look_ahead_.front().segment.length();
-    const bool plan_ended = t - plan_start_ >= plan_.duration();
+    const bool plan_ended = since_plan_start(t) >= plan_.duration();
     if (path.p < length && !(plan_ended && path.p >= length - 1e-9 * (1 + length))) break;
+    // A stop at the block end: the path stands on the end, in the block.
+    if (plan_ended && stop_at_ && std::abs(travelled_before_front_ + length - *stop_at_) <= 1e-9 * (1 + *stop_at_))
+      break;
     const std::vector<double> end_point = look_ahead_.front().segment.end();
     finish_front();
     if (look_ahead_.empty()) {
@@ -310,11 +506,18 @@ PathProgress PathInterpolator::interpolate(double t) {
       break;
     }
     // Go on from where the path left the block: at t, or where a plan that
-    // ended on the block end (a limiting transition) ended.
+    // ended on the block end (a limiting transition) ended. A plan that
+    // stops there (a corner) and is passed a rounding before its end also
+    // ends there: the next block starts at rest after it, instead of taking
+    // the braking's last residual acceleration round the corner (KRN-3:
+    // 40,004 mm/s^3 for a limit of 40,000).
     double t_from = t;
-    if (plan_ended) {
-      t_from = plan_start_ + plan_.duration();
+    const bool at_rest = std::abs(plan_.end().v) <= 1e-9;  // mm/s: 0 but for round-off
+    const bool stops_on_end = at_rest && std::abs(plan_.end().p - length) <= 1e-9 * (1 + length);
+    if (plan_ended || stops_on_end) {
+      t_from = plan_start_cycles_ * machine_.cycle_time_s() + plan_.duration();
       path = plan_.end();
+      if (at_rest) path.v = path.a = 0;
     }
     path.p -= length;
     begin_front(path, t_from);
@@ -333,10 +536,12 @@ PathProgress PathInterpolator::interpolate(double t) {
     run_blocks_without_motion(blocks_.size());
     return PathProgress::all_blocks_run;
   }
-  if (t - plan_start_ >= plan_.duration()) path.v = path.a = 0;  // held short of the block end
+  if (since_plan_start(t) >= plan_.duration()) path.v = path.a = 0;  // held short of the block end
   if (output(path)) return PathProgress::moving;
   // Never a number that is not finite to the drives: nothing moves any more.
   look_ahead_.clear();
+  pushed_.clear();
+  front_done_ = 0;
   cursors_.next_to_look_ahead = cursors_.next_to_run = cursors_.next_backward = blocks_.size();
   cursors_.lowest_stored = blocks_.size();
   for (AxisSetpoint& setpoint : setpoints_) setpoint.velocity = setpoint.acceleration = 0;

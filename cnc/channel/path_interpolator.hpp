@@ -4,7 +4,10 @@
 // (KRN-5). The channel's functions act on it through a narrow interface:
 // where the path stands, leave the front block, go on from standstill,
 // turn, stop at a path position, the velocity factor of the path's hold.
+#include <cmath>
 #include <cstddef>
+#include <deque>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -47,8 +50,15 @@ struct StopPoint {
   double front_length = 0;  // of the front segment
   double s = 0;             // path position on it
   std::vector<double> position;
-  bool on_contour_curve = false;  // the front piece was a contouring curve (KRN-6): off the programmed motion
-  bool front_ends_block = true;   // the front piece ended where its block ends (in the travel direction)
+  // On a contouring curve (KRN-6), off the programmed motion: which, where
+  // on it, and whether the path ran along it from its end to its start.
+  std::shared_ptr<const ContourJoint> curve;
+  double curve_s = 0;
+  bool curve_reversed = false;
+  // Where it stood in the block's programmed distance, counted from the
+  // block's start in program order (DPS-1; on a curve, off the motion, the
+  // position alone would not say it).
+  double programmed_place = 0;
 };
 
 enum class PathProgress {
@@ -76,7 +86,7 @@ class PathInterpolator {
   bool empty() const { return look_ahead_.empty(); }
   const Block& front_block() const { return blocks_[look_ahead_.front().block_index]; }
   // Nothing left to move, or the plan ended (held short of a block end).
-  bool standing(double t) const { return look_ahead_.empty() || t - plan_start_ >= plan_.duration(); }
+  bool standing(double t) const { return look_ahead_.empty() || since_plan_start(t) >= plan_.duration(); }
   const std::vector<AxisSetpoint>& setpoints() const { return setpoints_; }
   std::vector<double> setpoint_positions() const;
   double path_velocity() const { return path_velocity_; }
@@ -101,25 +111,80 @@ class PathInterpolator {
 
   // A stop `distance` mm further along the path from where it is at t, at
   // v = 0 (insert stop marks): the path holds there until release_stop().
-  // A stop closer than the path can brake moves out to where it can stop.
-  void stop_after(double t, double distance);
+  // Where the path stands (ISC-3), `distance` is on the scale of
+  // dist_prog_start (PathSegment::covered_distance) and the block in which
+  // the stop lies is split there into two look-ahead segments, the second
+  // one entered from standstill: the look-ahead brakes for it as for an M
+  // function at a block end, jerk-limited, and the path stops on the mark.
+  // Beyond the last block (the program end, or backward the start of the
+  // stored contour) it stops at the end. While moving, `distance` is path
+  // length, and a stop closer than the path can brake moves out to where
+  // it can stop.
+  // rebuild = false: the look-ahead is about to be emptied and filled anew
+  // (a delete distance to go short cut): the stop is placed as it fills.
+  void stop_after(double t, double distance, bool rebuild = true);
   void release_stop();
+  // The path stands: its look-ahead is built again from where it stands
+  // (drops the split of a stop cleared); go on with go_on_from_standstill.
+  void restart(double t) {
+    if (!look_ahead_.empty()) restart_here(t);
+  }
+  // The motions from where the path stands on, in the travel direction: the
+  // rest of the front block, the look-ahead, the blocks after it (POSITION
+  // mode searches them, ISC-4).
+  std::vector<Motion> path_ahead() const;
   // The path stands at the stop asked for.
   bool at_stop(double t) const;
+  // Where the stop lies once the look-ahead has reached it, and how much of
+  // the asked-for distance lies before it (less if it was moved to the end).
+  struct PlacedStop {
+    std::vector<double> position;
+    double covered = 0;  // from where stop_after() was called
+  };
+  const std::optional<PlacedStop>& placed_stop() const { return placed_stop_; }
 
   // A motion block whose geometry is not finite (a radius of 1e308): the
   // path stops at the end of the block before it, as at a decode error.
   const std::optional<size_t>& invalid_block() const { return invalid_block_; }
 
-  // Moves the path to time t (s after program start).
+  // Moves the path to time t (s after program start): a cycle's time k T,
+  // as every t of this interface.
   PathProgress interpolate(double t);
 
  private:
   void refill();
+  // One motion handed to the look-ahead: a block, a part of one split at a
+  // stop mark, the rest of one after a turn, a connector, a short cut. The
+  // look-ahead makes pieces of it (KRN-6); its last piece ends_block.
+  struct PushedMotion {
+    size_t block = 0;
+    Motion motion;        // in the travel direction
+    double origin = 0;    // where it begins in the block's programmed distance (StopPoint::programmed_place)
+    double covered = 0;   // what it adds to dist_prog_start (DPS-1)
+    SlopeType slope = SlopeType::trapez;
+    std::optional<Corner> out;  // how the path leaves it; none: taken as it is (DDTG-2)
+  };
+  PushedMotion whole_block(size_t k) const;
+  // The rest of block k from the stop the way the path now travels.
+  PushedMotion rest_of_block(size_t k, const Motion& rest) const;
+  // How the path leaves block k into the next motion block the way it travels.
+  Corner corner_out(size_t k) const;
+  // Every motion enters the look-ahead here: where a stop asked for lies in
+  // it, split in two (stop_after).
+  void push(PushedMotion motion, bool stop_before = false);
+  void hand_over(PushedMotion motion, bool stop_before);
+  // From a stop on a contouring curve, the rest of the curve towards its
+  // end (`towards_end`) or its start, then the motion of the block there;
+  // the block whose motion it is.
+  size_t push_along_curve(const StopPoint& stop, bool towards_end);
+  void place_stop(std::vector<double> position);
+  // Nothing more comes into the look-ahead this way: a stop not placed yet lands at its end.
+  void place_stop_at_end();
+  // The path stands: the look-ahead is built again from where it stands.
+  void restart_here(double t);
   void refill_forward();
   void refill_backward();
   Corner corner_below(size_t i) const;
-  double programmed_origin(size_t k) const;
   // Makes the look-ahead's front block the one in the interpolator, after
   // reaching the blocks without motion before it, and plans from `state`
   // (path position within the block) at time t0.
@@ -127,7 +192,14 @@ class PathInterpolator {
   void plan(const MotionState& state, double t0);
   void finish_front();
   void run_blocks_without_motion(size_t up_to);
-  MotionState path_state_at(double t) const { return plan_.at(t - plan_start_); }
+  // Seconds since the plan started, at the cycle time t = k T. Counted in
+  // cycles: k is exact, while k T - k0 T carries the rounding of both, a
+  // jitter that grows with the run (KRN-3: 2e-6 of the jerk limit, 40,000.08
+  // mm/s^3, 24 minutes into a run).
+  double since_plan_start(double t) const {
+    return (std::nearbyint(t / machine_.cycle_time_s()) - plan_start_cycles_) * machine_.cycle_time_s();
+  }
+  MotionState path_state_at(double t) const { return plan_.at(since_plan_start(t)); }
   // False (setpoints unchanged) if a setpoint is not finite.
   bool output(const MotionState& path);
 
@@ -138,23 +210,27 @@ class PathInterpolator {
   TravelDirection direction_ = TravelDirection::forward;
   LookAhead look_ahead_;
   MotionProfile plan_;    // of the stretch from the front block on; p = 0 at its start
-  double plan_start_ = 0;  // s after program start
+  double plan_start_cycles_ = 0;  // after program start; a plan may start between two cycles
   bool replan_ = false;    // the velocity factor changed
   // Path length travelled (either direction) before the front segment, and
   // where a stop is asked for on the same scale.
   double travelled_before_front_ = 0;
   std::optional<double> stop_at_;
+  // The same on the scale of covered distance (DPS-1), for a stop not yet
+  // placed in the look-ahead; where the look-ahead's pushed segments end.
+  double covered_before_front_ = 0;
+  std::optional<double> stop_covered_;
+  double stop_covered_from_ = 0;
+  std::optional<PlacedStop> placed_stop_;
+  double pushed_covered_ = 0;
+  std::deque<PushedMotion> pushed_;  // from the front's on
+  // The front's finished pieces' dist_prog_start share (KRN-6: a motion is
+  // several pieces).
+  double front_done_ = 0;
   std::optional<size_t> invalid_block_;
   std::vector<AxisSetpoint> setpoints_;
   double path_velocity_ = 0;
   double front_covered_ = 0;
-  // DPS-1 across pieces of one block (KRN-6): what the finished pieces of
-  // the front block covered, where the last stop lay in its programmed
-  // distance, and the block whose pieces began there (a rest after a turn).
-  double front_block_done_ = 0;
-  double stop_programmed_ = 0;
-  std::optional<size_t> rest_block_;
-  double rest_origin_ = 0;
 };
 
 }  // namespace hil::cnc

@@ -3,8 +3,8 @@
 namespace hil::cnc {
 
 bool SynchronousActions::queue(const Block& block) {
-  for (const MFunction& m : block.m_functions) actions_.push_back({m.nr, 0});
-  if (block.dwell_s > 0) actions_.push_back({-1, block.dwell_s});
+  for (const MFunction& m : block.m_functions) actions_.push_back({m.nr, 0, 0});
+  if (block.dwell_s > 0) actions_.push_back({-1, block.dwell_s, 0});
   return !block.m_functions.empty() || block.dwell_s > 0;
 }
 
@@ -18,6 +18,7 @@ bool SynchronousActions::run(const ControlUnitBool& ack, double t, HliState& hli
       if (!hli.m_function_request_r) {
         hli.m_function_request_r = true;  // output; acknowledged in a later cycle
         hli.m_function_nr_r = action.m_function;
+        hli.m_function_add_nr_r = action.add_nr;
         return false;
       }
       if (!acknowledged) return false;

@@ -3,7 +3,7 @@
 // PLC one after the other and each acknowledged by it, and its #TIME dwell,
 // all before the block's motion; the path holds until none is left.
 // Reads: m_function_ack (a rising edge of command_w while enable_w).
-// Writes: m_function_request_r, m_function_nr_r.
+// Writes: m_function_request_r, m_function_nr_r, m_function_add_nr_r.
 #include <deque>
 
 #include "block.hpp"
@@ -16,6 +16,8 @@ class SynchronousActions {
  public:
   // The block's M functions and dwell, in order; true if it has any.
   bool queue(const Block& block);
+  // An M function with its additional value (an insert stop mark, ISC-5).
+  void queue_m_function(int nr, int32_t add_nr) { actions_.push_back({nr, 0, add_nr}); }
   // Outputs the next M function, takes the PLC's acknowledgement, counts
   // down a dwell (t: s after program start); true when the last one is done.
   bool run(const ControlUnitBool& ack, double t, HliState& hli);
@@ -28,6 +30,7 @@ class SynchronousActions {
   struct Action {
     int m_function = -1;
     double dwell_s = 0;
+    int32_t add_nr = 0;
   };
   std::deque<Action> actions_;
   double dwell_end_ = -1;  // s after program start, while the front action is a dwell

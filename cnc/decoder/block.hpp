@@ -17,7 +17,7 @@ struct Motion {
   std::vector<double> end;    // mm, per machine axis
   double center_x = 0;        // mm, absolute arc centre (G02/G03, XY plane)
   double center_y = 0;
-  double feed = 0;            // mm/s (programmed F is mm/min); 0 for G00
+  double feed = 0;            // mm/s (programmed F is mm/min), the F in force; G00 moves at rapid
 };
 
 // #DISTANCE PROG START ON / OFF (modal) / CLEAR (DPS-2).
@@ -52,6 +52,21 @@ struct MFunction {
   bool operator==(const MFunction& other) const { return nr == other.nr && pre_output_mm == other.pre_output_mm; }
 };
 
+// A stop mark (ISC-1, ISC-8): where and how, as the insert command unit's
+// command_w has it.
+struct InsertCommand {
+  double dist_or_pos = 0;  // 0.1 um
+  int rel_abs_mode = 0;    // 0 relative iterative, 1 absolute, 2 relative once
+  int axis_nr = 0;         // 0 DISTANCE mode, > 0 POSITION mode (1 = the first machine axis)
+  int m_function_nr = 0;   // 0 M00, 1 M01, > 1 M<n> (MVS_SVS)
+  int32_t add_nr = 0;
+};
+// #INSERT CMD [ON|OFF] [..] (ISC-8).
+struct InsertCmdLine {
+  bool off = false;  // OFF: the mark is cleared, insertion disabled until ON
+  std::optional<InsertCommand> command;
+};
+
 struct Block {
   int64_t nc_line = 0;   // 1-based line of the NC program
   // Lines the decoder has read up to this one, repeated lines ($FOR)
@@ -77,11 +92,13 @@ struct Block {
   // How the path leaves this motion block (KRN-6), with the contour mode in force.
   BlockTransition transition = BlockTransition::standard;
   ContourMode contour;
+  std::optional<int> programmed_stop;  // M00 (0) or M01 (1), ISC-5
+  std::optional<InsertCmdLine> insert_cmd;
 
   // The path stands still where this block is reached: for the PLC's
   // acknowledgement, a dwell, or a channel initialisation.
   bool stops_path() const {
-    return !m_functions.empty() || dwell_s > 0 ||
+    return !m_functions.empty() || dwell_s > 0 || programmed_stop || insert_cmd ||
            short_cut_restriction == ShortCutRestriction::channel_initialisation;
   }
   // Anything for the interpolator to do besides moving.

@@ -65,6 +65,11 @@ void add_m_function(const Word& w, const DecoderState& state, Block& block) {
     block.program_end = true;
     return;
   }
+  if (m == 0 || m == 1) {  // M00 / M01: the channel's own stop (ISC-5), not output to the PLC
+    if (block.programmed_stop) throw LineError{"two of M00 / M01 in one block"};
+    block.programmed_stop = m;
+    return;
+  }
   const auto pre_output = state.pre_output_mm.find(m);
   block.m_functions.push_back({m, pre_output == state.pre_output_mm.end() ? 0.0 : pre_output->second});
 }
@@ -140,10 +145,8 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
                      : programmed.transition == 61 ? BlockTransition::contour
                                                    : modal.transition;
   block.contour = modal.contour;
-  if (m.type != MotionType::rapid) {
-    if (!(modal.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
-    m.feed = modal.feed;
-  }
+  if (m.type != MotionType::rapid && !(modal.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
+  m.feed = modal.feed;  // G00 too: a short cut to its end runs at it (DDTG-2)
   if (is_arc) set_arc_centre(m, programmed.i, programmed.j, state);
   state.position = target;
 }

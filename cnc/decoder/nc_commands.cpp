@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <iterator>
@@ -12,6 +14,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "command_parameters.hpp"
 #include "value_ranges.hpp"
 
 namespace hil::cnc::decoding {
@@ -179,74 +182,116 @@ void decode_channel_init(const std::string& arguments, DecoderState&, Block& blo
 // (PATH_DEV) and DIST (DIST); the manual's other types and parameters are
 // refused by name.
 void decode_contour_mode(const std::string& arguments, DecoderState& state, Block&) {
-  std::string rest = arguments;
-  std::optional<BlockTransition> switch_to;
-  if (rest.rfind("ON", 0) == 0 && (rest.size() == 2 || rest[2] == ' ' || rest[2] == '[')) {
-    switch_to = BlockTransition::contour;
-    rest = rest.substr(2);
-  } else if (rest == "OFF") {
+  const CommandArguments args = read_command_arguments("#CONTOUR MODE", arguments);
+  if (args.on == false) {
+    if (args.has_list) throw LineError{"#CONTOUR MODE OFF takes no parameters"};
     if (state.modal.transition == BlockTransition::contour) state.modal.transition = BlockTransition::standard;
     return;
   }
-  rest.erase(0, rest.find_first_not_of(' '));
-  if (rest.empty() && !switch_to) throw LineError{"#CONTOUR MODE needs ON, OFF or [DEV PATH_DEV=..] / [DIST DIST=..]"};
+  if (!args.on && !args.has_list) throw LineError{"#CONTOUR MODE needs ON, OFF or [DEV PATH_DEV=..] / [DIST DIST=..]"};
   ContourMode mode = state.modal.contour;
-  if (!rest.empty()) {
-    if (rest.front() != '[' || rest.back() != ']' || rest.find(']') != rest.size() - 1)
-      throw LineError{"#CONTOUR MODE: parameters go in one [..]"};
-    std::string inner = rest.substr(1, rest.size() - 2);
-    std::replace(inner.begin(), inner.end(), ',', ' ');
-    for (size_t eq; (eq = inner.find(" =")) != std::string::npos;) inner.erase(eq, 1);  // PATH_DEV = 0.1
-    for (size_t eq; (eq = inner.find("= ")) != std::string::npos;) inner.erase(eq + 1, 1);
-    std::vector<std::string> items;
-    for (size_t i = 0; i < inner.size();) {
-      const size_t begin = inner.find_first_not_of(' ', i);
-      if (begin == std::string::npos) break;
-      const size_t end = std::min(inner.find(' ', begin), inner.size());
-      items.push_back(inner.substr(begin, end - begin));
-      i = end;
+  bool dev_value = false, dist_value = false;
+  for (const CommandParameter& item : args.parameters) {
+    const std::string& key = item.key;
+    if (!item.value) {
+      if (key == "DEV") mode.type = ContourMode::Type::dev;
+      else if (key == "DIST") mode.type = ContourMode::Type::dist;
+      else if (key == "PTP" || key == "DIST_SOFT" || key == "DIST_MASTER" || key == "DEV_MASTER")
+        throw LineError{"#CONTOUR MODE type " + key + " is not supported (DEV and DIST are)"};
+      else throw LineError{"#CONTOUR MODE: unknown type '" + key + "'"};
+      continue;
     }
-    bool dev_value = false, dist_value = false;
-    for (const std::string& item : items) {
-      const size_t eq = item.find('=');
-      const std::string key = item.substr(0, eq);
-      if (eq == std::string::npos) {
-        if (key == "DEV") mode.type = ContourMode::Type::dev;
-        else if (key == "DIST") mode.type = ContourMode::Type::dist;
-        else if (key == "PTP" || key == "DIST_SOFT" || key == "DIST_MASTER" || key == "DEV_MASTER")
-          throw LineError{"#CONTOUR MODE type " + key + " is not supported (DEV and DIST are)"};
-        else throw LineError{"#CONTOUR MODE: unknown type '" + key + "'"};
-        continue;
-      }
+    if (key == "PATH_DEV" || key == "DIST") {
       double value = 0;
       try {
-        value = evaluate_expression(item.substr(eq + 1), state.parameters);
+        value = evaluate_expression(*item.value, state.parameters);
       } catch (const std::invalid_argument& e) {
         throw LineError{"#CONTOUR MODE " + key + ": " + e.what()};
       }
-      if (key == "PATH_DEV" || key == "DIST") {
-        if (!(value > 0 && value <= max_length_mm))
-          throw LineError{"#CONTOUR MODE " + key + " must be > 0 and <= " + std::to_string(max_length_mm) + " mm"};
-        (key == "PATH_DEV" ? mode.path_dev : mode.dist) = value;
-        (key == "PATH_DEV" ? dev_value : dist_value) = true;
-      } else if (key == "TRACK_DEV" || key == "RELEASE_DIST" || key == "AX_DEV" || key == "AX_DIST" ||
-                 key == "MAX_ANGLE" || key == "PTP_ANGLE_MIN" || key == "WEIGHT" || key == "SLOPE" ||
-                 key == "TANGENTIAL" || key == "PTP_MAX_DEV" || key == "TRACK_DIST") {
-        throw LineError{"#CONTOUR MODE parameter " + key + " is not supported (PATH_DEV with DEV, DIST with DIST)"};
+      if (!(value > 0 && value <= max_length_mm))
+        throw LineError{"#CONTOUR MODE " + key + " must be > 0 and <= " + std::to_string(max_length_mm) + " mm"};
+      (key == "PATH_DEV" ? mode.path_dev : mode.dist) = value;
+      (key == "PATH_DEV" ? dev_value : dist_value) = true;
+    } else if (key == "TRACK_DEV" || key == "RELEASE_DIST" || key == "AX_DEV" || key == "AX_DIST" ||
+               key == "MAX_ANGLE" || key == "PTP_ANGLE_MIN" || key == "WEIGHT" || key == "SLOPE" ||
+               key == "TANGENTIAL" || key == "PTP_MAX_DEV" || key == "TRACK_DIST") {
+      throw LineError{"#CONTOUR MODE parameter " + key + " is not supported (PATH_DEV with DEV, DIST with DIST)"};
+    } else {
+      throw LineError{"#CONTOUR MODE: unknown parameter '" + key + "'"};
+    }
+  }
+  if (mode.type == ContourMode::Type::dev && dist_value) throw LineError{"#CONTOUR MODE DEV takes PATH_DEV, not DIST"};
+  if (mode.type == ContourMode::Type::dist && dev_value) throw LineError{"#CONTOUR MODE DIST takes DIST, not PATH_DEV"};
+  if (mode.type == ContourMode::Type::dist && !(mode.dist > 0)) throw LineError{"#CONTOUR MODE DIST needs DIST=.."};
+  state.modal.contour = mode;
+  if (args.on) state.modal.transition = BlockTransition::contour;
+}
+
+// A whole number of an #INSERT CMD parameter within [min, max].
+int64_t insert_whole(const std::string& key, const std::string& text, const DecoderState& state, int64_t min,
+                     int64_t max) {
+  double v = 0;
+  try {
+    v = evaluate_expression(text, state.parameters);
+  } catch (const std::invalid_argument&) {
+    throw LineError{"#INSERT CMD " + key + "='" + text + "' is not a number"};
+  }
+  if (!(v >= static_cast<double>(min) && v <= static_cast<double>(max)) || v != std::floor(v))
+    throw LineError{"#INSERT CMD " + key + "=" + text + ": a whole number " + std::to_string(min) + " .. " +
+                    std::to_string(max)};
+  return static_cast<int64_t>(v);
+}
+
+// #INSERT CMD [ON|OFF] [AXNR=.. MNR=.. ADDR=.. DIST=.. ABS|REL|REL_ONCE]
+// (ISC-8); the defaults are #INSERT CMD [MNR=0 DIST=0 REL AXNR=0].
+void decode_insert_cmd(const std::string& arguments, DecoderState& state, Block& block) {
+  const CommandArguments args = read_command_arguments("#INSERT CMD", arguments);
+  InsertCmdLine line;
+  line.off = args.on == false;
+  if (args.has_list) {
+    if (line.off) throw LineError{"#INSERT CMD OFF takes no parameters"};
+    InsertCommand c;
+    int modes = 0;
+    for (const CommandParameter& item : args.parameters) {
+      const std::string& key = item.key;
+      if (!item.value) {
+        if (key == "ABS") c.rel_abs_mode = 1;
+        else if (key == "REL") c.rel_abs_mode = 0;
+        else if (key == "REL_ONCE") c.rel_abs_mode = 2;
+        else throw LineError{"#INSERT CMD: unknown parameter '" + key + "'"};
+        if (++modes > 1) throw LineError{"#INSERT CMD: ABS, REL and REL_ONCE exclude each other", 22130};
+        continue;
+      }
+      const std::string& value = *item.value;
+      if (key == "AXNR" || key == "AX") {
+        c.axis_nr =
+            static_cast<int>(insert_whole(key, value, state, 0, static_cast<int64_t>(state.machine.axes.size())));
+      } else if (key == "MNR") {
+        c.m_function_nr = static_cast<int>(insert_whole(key, value, state, 0, 65535));
+      } else if (key == "ADDR") {
+        c.add_nr = static_cast<int32_t>(insert_whole(key, value, state, INT32_MIN, INT32_MAX));
+      } else if (key == "DIST") {
+        double d = 0;
+        try {
+          d = evaluate_expression(value, state.parameters);
+        } catch (const std::invalid_argument&) {
+          throw LineError{"#INSERT CMD DIST='" + value + "' is not a number"};
+        }
+        if (!(std::abs(d) <= max_length_mm * 1e4)) throw LineError{"#INSERT CMD DIST=" + value + " is out of range"};
+        c.dist_or_pos = d;
       } else {
-        throw LineError{"#CONTOUR MODE: unknown parameter '" + key + "'"};
+        throw LineError{"#INSERT CMD: unknown parameter '" + key + "'"};
       }
     }
-    if (mode.type == ContourMode::Type::dev && dist_value) throw LineError{"#CONTOUR MODE DEV takes PATH_DEV, not DIST"};
-    if (mode.type == ContourMode::Type::dist && dev_value) throw LineError{"#CONTOUR MODE DIST takes DIST, not PATH_DEV"};
-    if (mode.type == ContourMode::Type::dist && !(mode.dist > 0)) throw LineError{"#CONTOUR MODE DIST needs DIST=.."};
+    line.command = c;
+  } else if (!args.on) {
+    line.command = InsertCommand{};  // the defaults: DIST=0 REL clears the mark
   }
-  state.modal.contour = mode;
-  if (switch_to) state.modal.transition = *switch_to;
+  block.insert_cmd = line;
 }
 
 // A new command is a handler above and one row here; next (KRN-1):
-// #INSERT CMD, #FLUSH, #FLUSH WAIT.
+// #FLUSH, #FLUSH WAIT.
 constexpr NcCommand nc_commands[] = {
     {"#DISTANCE PROG START", decode_distance_prog_start},
     {"#SLOPE", decode_slope},
@@ -254,6 +299,7 @@ constexpr NcCommand nc_commands[] = {
     {"#TIME", decode_time},
     {"#CS", decode_coordinate_system},
     {"#CHANNEL INIT", decode_channel_init},
+    {"#INSERT CMD", decode_insert_cmd},
     {"#CONTOUR MODE", decode_contour_mode},
 };
 

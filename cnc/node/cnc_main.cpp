@@ -68,7 +68,7 @@ class CncNode : public cnc::CyclePolicy {
         channels::participant,
         [this](const hil::participant_t& m, const lcm::ReceiveBuffer& rbuf) {
           if (m.phase == hil::participant_t::PHASE_READY) ready_.insert(m.name);
-          if (m.name == "logger" && m.phase != hil::participant_t::PHASE_RUN_END) lock_step_.logger_alive(rbuf.recv_utime);
+          if (m.name == "logger" && m.phase != hil::participant_t::PHASE_RUN_END) lock_step_.logger_alive(rbuf.recv_utime, m.cycle);
           return true;
         },
         100000);
@@ -104,7 +104,7 @@ class CncNode : public cnc::CyclePolicy {
 
   std::optional<cnc::CycleAnswers> answers(int64_t) override {
     wait_for_answers();
-    lock_step_.check_logger(wall_us());
+    wait_for_logger();
     cnc_node::LockStep::Taken taken = lock_step_.take();
     return cnc::CycleAnswers{taken.control, cnc_node::drive_errors(machine_, taken.axis_errors),
                              std::move(taken.lost)};
@@ -126,7 +126,7 @@ class CncNode : public cnc::CyclePolicy {
       }
       lcm_.handleTimeout(50);
     }
-    lock_step_.logger_alive(wall_us());
+    lock_step_.logger_alive(wall_us(), -1);
     return true;
   }
 
@@ -176,6 +176,15 @@ class CncNode : public cnc::CyclePolicy {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - clock_type::now());
       if (left.count() <= 0) return lock_step_.lose_silent();
       if (lcm_.handleTimeout(static_cast<int>(left.count()) + 1) < 0) throw std::runtime_error("LCM receive failed");
+    }
+  }
+
+  // Until the logger is within LockStep::logger_window cycles, or lost.
+  void wait_for_logger() {
+    lock_step_.check_logger(wall_us());
+    while (lock_step_.logger_behind()) {
+      if (lcm_.handleTimeout(10) < 0) throw std::runtime_error("LCM receive failed");
+      lock_step_.check_logger(wall_us());
     }
   }
 

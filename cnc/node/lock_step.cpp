@@ -53,9 +53,20 @@ void LockStep::lose_silent() {
 }
 
 void LockStep::check_logger(int64_t now_us) {
-  if (!watch_logger_ || logger_.lost || now_us - logger_heard_us_ <= logger_timeout_ms_ * 1000) return;
-  lose(logger_, "no heartbeat for " + std::to_string((now_us - logger_heard_us_) / 1000) + " ms at cycle " +
-                    std::to_string(cycle_) + ": the run is no longer recorded");
+  if (!watch_logger_ || logger_.lost) return;
+  const int64_t timeout_us = logger_timeout_ms_ * 1000;
+  if (now_us - logger_heard_us_ > timeout_us)
+    return lose(logger_, "no heartbeat for " + std::to_string((now_us - logger_heard_us_) / 1000) + " ms at cycle " +
+                             std::to_string(cycle_) + ": the run is no longer recorded");
+  if (!logger_behind()) {
+    logger_behind_since_us_ = -1;
+    return;
+  }
+  if (logger_behind_since_us_ < 0) logger_behind_since_us_ = now_us;
+  if (now_us - logger_behind_since_us_ > timeout_us)
+    lose(logger_, "it has recorded up to cycle " + std::to_string(logger_cycle_) + " and not caught up with cycle " +
+                      std::to_string(cycle_) + " within " + std::to_string(logger_timeout_ms_) +
+                      " ms: the run is no longer recorded");
 }
 
 LockStep::Taken LockStep::take() {

@@ -6,7 +6,9 @@
 // every cycle after it). A participant that has not answered when the
 // watchdog fires is lost: the channel stops and the run goes on without
 // waiting for it. The logger answers no cycle; its heartbeat must not fall
-// silent for longer than its timeout.
+// silent for longer than its timeout, and it must not fall more than
+// `logger_window` cycles behind: a logger descheduled on a loaded machine
+// would otherwise lose datagrams at its full socket (RIG-9).
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -35,9 +37,19 @@ class LockStep {
   // The watchdog fired: whoever has not answered is lost.
   void lose_silent();
 
-  // The logger's heartbeat was received at `wall_us`.
-  void logger_alive(int64_t wall_us) { logger_heard_us_ = std::max(logger_heard_us_, wall_us); }
-  // At `now_us`: a logger silent for longer than its timeout is lost.
+  static constexpr int64_t logger_window = 128;
+
+  // The logger's heartbeat, received at `wall_us`: it has recorded the
+  // cycles up to `recorded_cycle`.
+  void logger_alive(int64_t wall_us, int64_t recorded_cycle) {
+    logger_heard_us_ = std::max(logger_heard_us_, wall_us);
+    logger_cycle_ = std::max(logger_cycle_, recorded_cycle);
+  }
+  // The cycle waited for is more than logger_window ahead of the logger:
+  // wait for it before the next cycle.
+  bool logger_behind() const { return watch_logger_ && !logger_.lost && cycle_ - logger_cycle_ > logger_window; }
+  // At `now_us`: a logger silent, or behind, for longer than its timeout is
+  // lost.
   void check_logger(int64_t now_us);
 
   struct Taken {
@@ -68,6 +80,8 @@ class LockStep {
   int64_t answer_timeout_ms_, logger_timeout_ms_;
   int64_t cycle_ = -1;
   int64_t logger_heard_us_ = 0;
+  int64_t logger_cycle_ = -1;
+  int64_t logger_behind_since_us_ = -1;
   std::optional<HliControl> control_;
   std::vector<cnc::LostParticipant> newly_lost_;
   std::vector<std::pair<std::string, int64_t>> lost_so_far_;

@@ -97,19 +97,22 @@ PathSegment ContourBuilder::piece_of(const Open& block, double s_from, double s_
 void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<PathPiece>& out) {
   PendingCurve& p = *pending_;
   Open& a = *open_;  // the block after the corner
-  auto curve = std::make_shared<const ContourCurve>(p.start,
-                                                    ContourCurve::End{p.end.point, p.end.tangent, end_curvature});
+  auto joint = std::make_shared<ContourJoint>();
+  joint->curve = std::make_shared<const ContourCurve>(p.start,
+                                                      ContourCurve::End{p.end.point, p.end.tangent, end_curvature});
   const double len = a.full.length();
   // Split where the programmed shares meet, so that both halves count the
   // same share of programmed distance per path length.
   const double share_after = a.d_start, share_before = p.d_before;
-  const double half = curve->length() * share_before / (share_before + share_after);
-  PathSegment first(curve, 0, half, p.from_velocity, p.from_covered, machine_);
-  out.push_back({p.from_index, std::move(first), p.from_slope, false, false, true});
+  joint->split = joint->curve->length() * share_before / (share_before + share_after);
   const double covered = a.full.covered_distance() * a.d_start / len;
   a.covered_used += covered;
-  PathSegment second(curve, half, curve->length(), a.full.programmed_velocity(), covered, machine_);
-  out.push_back({a.index, std::move(second), a.slope, false, true, false});
+  joint->before = {p.from_index, p.from_covered, p.from_velocity};
+  joint->after = {a.index, covered, a.full.programmed_velocity()};
+  const double split = joint->split, length = joint->curve->length();
+  std::shared_ptr<const ContourJoint> shared = std::move(joint);
+  out.push_back({p.from_index, PathSegment(shared, 0, split, false, machine_), p.from_slope, false, false, true});
+  out.push_back({a.index, PathSegment(shared, split, length, false, machine_), a.slope, false, true, false});
   pending_.reset();
 }
 

@@ -196,4 +196,13 @@ double ContourCurve::distance_to(const std::vector<double>& point) const {
   return std::sqrt(std::min(best_d, dist_sq((lo + hi) / 2)));
 }
 
+double ContourJoint::covered(double s_from, double s_to) const {
+  const double length = curve->length();
+  const auto share = [&](double lo, double hi, double covered_half) {
+    const double overlap = std::min(s_to, hi) - std::max(s_from, lo);
+    return hi > lo && overlap > 0 ? covered_half * overlap / (hi - lo) : 0.0;
+  };
+  return share(0, split, before.covered) + share(split, length, after.covered);
+}
+
 }  // namespace hil::cnc

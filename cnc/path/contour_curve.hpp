@@ -6,6 +6,8 @@
 // Quintic Hermite form with |dP/du| = L (the chord) at both ends and
 // d²P/du² = L² k there. Evaluated by path length s (0 .. length()).
 #include <array>
+#include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace hil::cnc {
@@ -49,6 +51,25 @@ class ContourCurve {
     std::vector<double> t, k, dk;  // tangent, curvature, dk/ds
   };
   Frame frame(double u) const;
+};
+
+// A contouring curve where it replaces a corner (KRN-6): the half up to
+// `split` belongs to the block before the corner (in the travel direction
+// it was built for), the rest to the block after it. Each half covers the
+// programmed distance it replaces (DPS-1) and runs at most at its block's
+// programmed velocity. Backward motion and a turn inside the curve run
+// along the same curve (the rest of it, either way).
+struct ContourJoint {
+  std::shared_ptr<const ContourCurve> curve;
+  double split = 0;
+  struct Half {
+    size_t block = 0;
+    double covered = 0;
+    double programmed_velocity = 0;
+  };
+  Half before, after;
+  // What [s_from, s_to] of the curve covers of the programmed distance.
+  double covered(double s_from, double s_to) const;
 };
 
 }  // namespace hil::cnc

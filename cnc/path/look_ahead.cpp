@@ -38,6 +38,12 @@ void LookAhead::push(size_t block_index, const Motion& motion, SlopeType slope, 
     push_piece(std::move(piece));
 }
 
+double LookAhead::path_length() const {
+  double sum = 0;
+  for (const LookAheadBlock& b : blocks_) sum += b.segment.length();
+  return sum;
+}
+
 void LookAhead::flush() {
   for (PathPiece& piece : builder_.flush()) push_piece(std::move(piece));
 }
@@ -95,14 +101,27 @@ Limits LookAhead::cruise_limits(size_t i) const {
 // stop limiting because nothing is above the new cruise). There the stretch
 // ends with the highest velocity from which the next limiting transition
 // can still be kept (what the backward pass gives a limiting transition).
-Stretch LookAhead::stretch(double v_now) const {
+Stretch LookAhead::stretch(double v_now, size_t pass_through) const {
   Stretch st{0, 0, cruise_limits(0), blocks_.front().slope};
+  size_t passed = 0;
   for (size_t i = 0; i < blocks_.size(); ++i) {
     const Limits lim = cruise_limits(i);
     st.lim.a = std::min(st.lim.a, lim.a);
     st.lim.j = std::min(st.lim.j, lim.j);
     st.length += blocks_[i].segment.length();
     st.v_end = blocks_[i].v_end;
+    // Only a transition limiting by the programmed velocities alone: not a
+    // curvature step, nor into lower limits or another slope (those the
+    // path must pass with a = 0).
+    const bool passable = i + 1 < blocks_.size() && blocks_[i + 1].slope == st.slope &&
+                          blocks_[i].junction_limit >= v_now && blocks_[i].jerk_share == 1 &&
+                          blocks_[i + 1].jerk_share == 1 && cruise_limits(i + 1).a >= (1 - 1e-9) * lim.a &&
+                          cruise_limits(i + 1).j >= (1 - 1e-9) * lim.j;
+    if (blocks_[i].limiting && passed < pass_through && passable) {
+      ++passed;
+      st.lim.v = std::min({st.lim.v, blocks_[i].junction_limit, cruise_limits(i + 1).v});
+      continue;
+    }
     if (blocks_[i].limiting) break;
     if (blocks_[i].junction_limit < v_now * (1 - 1e-9)) {  // not a rounding above it (cruising at v_max)
       st.v_end = std::min(st.v_end, entry_velocity_after(i));

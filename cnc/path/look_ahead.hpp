@@ -56,6 +56,8 @@ class LookAhead {
   // Counted in programmed blocks, not pieces.
   bool full() const { return programmed_ >= capacity_; }
   size_t size() const { return blocks_.size(); }
+  // Of the pieces to plan, from the front's start.
+  double path_length() const;
   const LookAheadBlock& front() const { return blocks_.front(); }
 
   // stop_before: the path must stand still where the block starts (an M
@@ -86,8 +88,11 @@ class LookAhead {
   // The stretch that starts with the front block, for a path now moving at
   // v_now: up to the first limiting transition, or to a transition slower
   // than v_now (with an end velocity from which the next limiting one can
-  // still be kept).
-  Stretch stretch(double v_now) const;
+  // still be kept). `pass_through`: so many limiting transitions it runs
+  // through (with v at most their junction limit, which must allow v_now):
+  // one that turned limiting by an override change while the path brakes
+  // through it can demand what the braking path cannot meet (KRN-3).
+  Stretch stretch(double v_now, size_t pass_through = 0) const;
 
  private:
   // New v_end from block `last` down to the front, stretch by stretch: from

@@ -1,8 +1,37 @@
 #include "motion_parts.hpp"
 
+#include <cmath>
 #include <utility>
 
+#include "path_segment.hpp"
+
 namespace hil::cnc {
+namespace {
+
+double distance(const std::vector<double>& a, const std::vector<double>& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(sum);
+}
+
+constexpr double on_motion_mm = 1e-6;
+constexpr double shortest_part_mm = 1e-5;
+constexpr double nothing_left_mm = 1e-9;
+
+// How far along the motion the point lies from its start; none if it is off it.
+std::optional<double> along(const Motion& motion, const PathSegment& whole, const std::vector<double>& point,
+                            const MachineConfig& machine, bool at_end_if_closed) {
+  const bool at_start = distance(point, motion.start) <= on_motion_mm;
+  const bool at_end = distance(point, motion.end) <= on_motion_mm;
+  if (at_start && at_end) return at_end_if_closed ? whole.length() : 0.0;
+  if (at_start) return 0.0;
+  if (at_end) return whole.length();
+  const double s = PathSegment(motion_until(motion, point), machine).length();
+  if (!(s <= whole.length()) || distance(whole.position(s), point) > on_motion_mm) return std::nullopt;
+  return s;
+}
+
+}  // namespace
 
 Motion motion_until(Motion motion, const std::vector<double>& point) {
   motion.end = point;
@@ -19,6 +48,22 @@ Motion reversed(Motion motion) {
   if (motion.type == MotionType::arc_cw) motion.type = MotionType::arc_ccw;
   else if (motion.type == MotionType::arc_ccw) motion.type = MotionType::arc_cw;
   return motion;
+}
+
+std::optional<Motion> rest_of_motion(const Motion& motion, const std::vector<double>& point, bool backward,
+                                     const MachineConfig& machine, bool at_end_if_closed) {
+  const std::vector<double>& target = backward ? motion.start : motion.end;
+  const PathSegment whole(motion, machine);
+  if (const std::optional<double> s = along(motion, whole, point, machine, at_end_if_closed)) {
+    const double rest = backward ? *s : whole.length() - *s;
+    if (rest > shortest_part_mm) return backward ? reversed(motion_until(motion, point)) : motion_from(motion, point);
+  }
+  if (distance(point, target) <= nothing_left_mm) return std::nullopt;
+  Motion line = motion;  // G00 stays G00: with no F programmed a G01 line would not move
+  if (line.type != MotionType::rapid) line.type = MotionType::linear;
+  line.start = point;
+  line.end = target;
+  return line;
 }
 
 }  // namespace hil::cnc

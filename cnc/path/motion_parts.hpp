@@ -2,9 +2,11 @@
 // Parts of a programmed motion: to split a block (M function pre-output)
 // and to move along it backward (KRN-5). An arc keeps its centre; a point
 // must lie on the motion.
+#include <optional>
 #include <vector>
 
 #include "block.hpp"
+#include "machine_config.hpp"
 
 namespace hil::cnc {
 
@@ -14,5 +16,16 @@ Motion motion_until(Motion motion, const std::vector<double>& point);
 Motion motion_from(Motion motion, const std::vector<double>& point);
 // The same path the other way: end to start, G02 <-> G03.
 Motion reversed(Motion motion);
+
+// The way from `point` on to the motion's end, or (`backward`) back to its
+// start, reversed: the motion's own part where the point lies on it. A rest
+// too short to tell an arc's part from its full circle (10 nm), and the way
+// from a point off the motion (where delete distance to go ended a short
+// cut midway, 50810), are a straight line, so that the path goes on from
+// where it stands whatever it stands on. None where the point is there.
+// On a closed motion (a full circle) its start is its end:
+// `at_end_if_closed` tells which.
+std::optional<Motion> rest_of_motion(const Motion& motion, const std::vector<double>& point, bool backward,
+                                     const MachineConfig& machine, bool at_end_if_closed = false);
 
 }  // namespace hil::cnc

@@ -19,15 +19,20 @@ PathSegment::PathSegment(const Motion& m, const MachineConfig& machine)
   set_covered_distance(machine);
 }
 
-PathSegment::PathSegment(std::shared_ptr<const ContourCurve> curve, double s_from, double s_to,
-                         double programmed_velocity, double covered_distance, const MachineConfig& machine)
-    : start_(curve->position(s_from)),
-      end_(curve->position(s_to)),
+PathSegment::PathSegment(std::shared_ptr<const ContourJoint> joint, double s_from, double s_to, bool reversed,
+                         const MachineConfig& machine)
+    : start_(joint->curve->position(reversed ? s_to : s_from)),
+      end_(joint->curve->position(reversed ? s_from : s_to)),
       unit_(start_.size(), 0.0),
       length_(s_to - s_from),
-      covered_distance_(covered_distance),
-      curve_(std::move(curve)),
-      s_from_(s_from) {
+      covered_distance_(joint->covered(s_from, s_to)),
+      joint_(std::move(joint)),
+      s_from_(s_from),
+      reversed_(reversed) {
+  // The lower velocity of the halves it lies on.
+  double programmed_velocity = inf;
+  if (s_from < joint_->split) programmed_velocity = joint_->before.programmed_velocity;
+  if (s_to > joint_->split) programmed_velocity = std::min(programmed_velocity, joint_->after.programmed_velocity);
   set_contour_limits(machine, programmed_velocity);
   programmed_velocity_ = std::min(programmed_velocity, limits_.v);
 }
@@ -48,7 +53,7 @@ double on_grid(double value) {
 // each. |t_i| <= 1 is used for the tangential terms, so that the limits do
 // not change with the direction along a polyline.
 void PathSegment::set_contour_limits(const MachineConfig& machine, double programmed_velocity) {
-  const ContourCurve::AxisBounds b = curve_->bounds(s_from_, s_from_ + length_);
+  const ContourCurve::AxisBounds b = joint_->curve->bounds(s_from_, s_from_ + length_);
   // The lowest limits of the axes that move, against the norms of k and
   // dk/ds (|k_i| <= |k|): the same limits whichever way a polyline turns.
   double v = inf, a_axis = inf, j_axis = inf;
@@ -154,7 +159,7 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
 }
 
 std::vector<double> PathSegment::position(double s) const {
-  if (curve_) return curve_->position(s_from_ + s);
+  if (joint_) return joint_->curve->position(curve_position(s));
   std::vector<double> p(start_.size());
   for (size_t i = 0; i < p.size(); ++i) p[i] = start_[i] + unit_[i] * s;
   if (arc_) {
@@ -169,7 +174,12 @@ std::vector<double> PathSegment::position(double s) const {
 }
 
 std::vector<double> PathSegment::tangent(double s) const {
-  if (curve_) return curve_->tangent(s_from_ + s);
+  if (joint_) {
+    std::vector<double> t = joint_->curve->tangent(curve_position(s));
+    if (reversed_)
+      for (double& x : t) x = -x;
+    return t;
+  }
   std::vector<double> t = unit_;
   if (arc_) {
     const double angle = angle_at(s);
@@ -180,7 +190,7 @@ std::vector<double> PathSegment::tangent(double s) const {
 }
 
 std::vector<double> PathSegment::curvature(double s) const {
-  if (curve_) return curve_->curvature(s_from_ + s);
+  if (joint_) return joint_->curve->curvature(curve_position(s));  // the same either way
   std::vector<double> k(start_.size(), 0.0);
   if (arc_) {
     const double angle = angle_at(s);

@@ -16,11 +16,11 @@ namespace hil::cnc {
 class PathSegment {
  public:
   PathSegment(const Motion& motion, const MachineConfig& machine);
-  // A part [s_from, s_to] of a contouring curve (KRN-6), driven at most at
-  // `programmed_velocity`, covering `covered_distance` of the programmed
-  // blocks (DPS-1).
-  PathSegment(std::shared_ptr<const ContourCurve> curve, double s_from, double s_to, double programmed_velocity,
-              double covered_distance, const MachineConfig& machine);
+  // A part [s_from, s_to] of a contouring curve (KRN-6), from s_to to
+  // s_from if `reversed`; its programmed velocity and covered distance are
+  // those of the halves it lies on.
+  PathSegment(std::shared_ptr<const ContourJoint> joint, double s_from, double s_to, bool reversed,
+              const MachineConfig& machine);
 
   double length() const { return length_; }
   // Dynamic limits of the path from the axes' limits (G00: v from the rapid
@@ -34,7 +34,12 @@ class PathSegment {
   double covered_distance() const { return covered_distance_; }
   // A part of a programmed block covers its share of it (KRN-6).
   void set_covered_distance(double distance) { covered_distance_ = distance; }
-  bool is_contour_curve() const { return curve_ != nullptr; }
+  bool is_contour_curve() const { return joint_ != nullptr; }
+  // Of a contouring curve's part: the curve, and where path length s of the
+  // part lies on it.
+  const std::shared_ptr<const ContourJoint>& joint() const { return joint_; }
+  double curve_position(double s) const { return reversed_ ? s_from_ + length_ - s : s_from_ + s; }
+  bool reversed() const { return reversed_; }
   const std::vector<double>& end() const { return end_; }
 
   // Axis positions at path length s; first and second derivatives by s.
@@ -59,8 +64,9 @@ class PathSegment {
   double programmed_velocity_ = 0;
   double covered_distance_ = 0;
   Limits limits_;
-  std::shared_ptr<const ContourCurve> curve_;  // a contouring curve's part from s_from_
+  std::shared_ptr<const ContourJoint> joint_;  // a contouring curve's part from s_from_
   double s_from_ = 0;
+  bool reversed_ = false;
 };
 
 }  // namespace hil::cnc

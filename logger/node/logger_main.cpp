@@ -14,6 +14,7 @@
 #include <lcm/lcm-cpp.hpp>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <deque>
@@ -84,6 +85,8 @@ class LoggerNode {
   int64_t recorded() const { return recorded_; }
   // Messages of the run from others than this logger: the run is alive.
   int64_t heard() const { return heard_; }
+  // The last cycle of the run's HLI_STATE recorded (-1: none yet).
+  int64_t recorded_cycle() const { return recorded_cycle_; }
   int64_t dropped() const { return socket_drops_; }  // by the kernel, known after seal()
   const traffic::Ledger& refused() const { return refused_; }
 
@@ -149,6 +152,7 @@ class LoggerNode {
       return;
     }
     ++heard_;
+    if (channel == channels::hli_state) recorded_cycle_ = std::max(recorded_cycle_, id.cycle);
     if (channel == channels::manifest) {
       hil::run_manifest_t m;
       if (!lcm_support::decode(data, size, m)) return;
@@ -202,6 +206,7 @@ class LoggerNode {
   logger::Attendance attendance_;
   bool told_participants_ = false;  // by hil run; else the manifest's
   int64_t recorded_ = 0, heard_ = 0;
+  int64_t recorded_cycle_ = -1;
   int64_t socket_drops_ = -1;
   bool scenario_mismatch_ = false;
   traffic::Ledger refused_;
@@ -250,13 +255,16 @@ int main(int argc, char** argv) {
       }
     }
     auto last_message = clock_type::now(), next_alive = clock_type::now();
+    int64_t announced_cycle = -1;
     int64_t heard = node.heard();  // neither another rig's traffic nor its own heartbeat is a sign of the run
     clock_type::time_point cnc_end{};
     const logger::Attendance& attendance = node.attendance();
     while (!attendance.complete()) {
       const auto now = clock_type::now();
-      if (participant && now >= next_alive) {
-        participant->announce_alive();
+      // On time, and as the recording progresses: the CNC's flow control.
+      if (participant && (now >= next_alive || node.recorded_cycle() >= announced_cycle + 32)) {
+        announced_cycle = node.recorded_cycle();
+        participant->announce_alive(announced_cycle);
         next_alive = now + std::chrono::milliseconds(100);
       }
       if (lcm.handleTimeout(50) < 0) throw std::runtime_error("LCM receive failed");

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "decoder.hpp"
+#include "fuzz_plc.hpp"
 #include "fuzz_rng.hpp"
 #include "limit_check.hpp"
 #include "path_segment.hpp"
@@ -23,152 +24,6 @@
 
 namespace hil::fuzz {
 namespace {
-
-constexpr int32_t calm_override_min = 300;  // 30 %, in 0.1 %
-
-// The PLC of a run: a random personality (which units it plays with, how
-// often, how late it acknowledges), random until `chaos_end`, calm after.
-class FuzzPlc {
- public:
-  // Override values up to 120 %: above the machine's override_max_percent
-  // the channel clamps them (with a warning).
-  FuzzPlc(uint64_t seed, int64_t chaos_end) : rng_(seed), chaos_end_(chaos_end) {
-    use_feedhold_ = rng_.chance(0.5);
-    use_override_ = rng_.chance(0.6);
-    ramp_override_ = rng_.chance(0.2);
-    use_ddtg_ = rng_.chance(0.5);
-    use_backward_ = rng_.chance(0.4);
-    spurious_acks_ = rng_.chance(0.2);
-    feedhold_mean_ = rng_.log_uniform(20, 1500);
-    override_mean_ = ramp_override_ ? rng_.uniform(1, 5) : rng_.log_uniform(5, 1500);
-    ddtg_mean_ = rng_.log_uniform(50, 3000);
-    backward_mean_ = rng_.log_uniform(30, 2000);
-    const size_t delay = rng_.pick({0.3, 0.4, 0.2, 0.1});
-    ack_delay_max_ = delay == 0 ? 1 : delay == 1 ? 20 : delay == 2 ? 300 : 2000;
-    calm_override_enable_ = rng_.chance(0.7);
-    calm_override_ = static_cast<int32_t>(rng_.integer(calm_override_min, 1200));
-    next_feedhold_ = gap(feedhold_mean_);
-    next_override_ = gap(override_mean_);
-    next_ddtg_ = gap(ddtg_mean_);
-    next_backward_ = gap(backward_mean_);
-  }
-
-  const PlcCounts& counts() const { return counts_; }
-  // No backward motion toggle within 1 um of where the path entered its
-  // block (start, or end going backward): a turn there drops a rest under
-  // 10 nm (backward_motion.cpp, shortest_rest_mm) and the setpoint jumps.
-  void avoid_turns_at(std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> block_ends) {
-    block_ends_ = std::move(block_ends);
-  }
-
-  // The answer to the state of cycle k, applied by step k + 1.
-  void answer(int64_t k, const HliState& s, HliControl& c) {
-    c.cycle = k;
-    c.program_start.command_w = false;
-    const bool chaos = k < chaos_end_;
-    if (!chaos) {
-      c.feedhold = {false, true};
-      c.override = {calm_override_, calm_override_enable_};
-      c.delete_distance_to_go.command_w = false;
-      // Forward, but a short cut running backward cannot turn (DDTG-10: it
-      // stands until backward motion is requested again): let it finish.
-      c.backward_motion = {s.backward_motion.state_r && s.delete_distance_to_go_active_r, true};
-    }
-    if (chaos && use_feedhold_ && k >= next_feedhold_) {
-      c.feedhold = {!c.feedhold.command_w, rng_.chance(0.95)};
-      next_feedhold_ = k + gap(feedhold_mean_);
-      ++counts_.feedhold_edges;
-    }
-    if (chaos && use_override_ && k >= next_override_) {
-      int32_t value;
-      if (ramp_override_) {
-        value = std::clamp(c.override.command_w + static_cast<int32_t>(rng_.integer(-40, 40)), 0, override_top_);
-      } else {
-        const size_t which = rng_.pick({0.15, 0.55, 0.15, 0.15});
-        value = static_cast<int32_t>(which == 0   ? 0
-                                     : which == 1 ? rng_.integer(0, override_top_)
-                                     : which == 2 ? rng_.integer(950, 1050)
-                                                  : rng_.integer(1, 50));
-      }
-      c.override = {value, rng_.chance(0.9)};
-      next_override_ = k + gap(override_mean_);
-      ++counts_.override_changes;
-    }
-    if (chaos && use_ddtg_) {
-      ControlUnitBool& ddtg = c.delete_distance_to_go;
-      if (!ddtg.command_w && k >= next_ddtg_) {
-        ddtg = {true, rng_.chance(0.9)};
-        const uint32_t mask = rng_.chance(0.4) ? 0u : static_cast<uint32_t>(rng_.integer(1, 15));
-        c.delete_distance_to_go_activation = {mask, rng_.chance(0.85)};
-        // Held: a few cycles (withdrawn before the short cut, DDTG-3), until
-        // the short cut runs, or long.
-        const size_t hold = rng_.pick({0.25, 0.4, 0.35});
-        release_on_active_ = hold == 1;
-        ddtg_release_ = k + (hold == 0 ? rng_.integer(1, 20) : hold == 1 ? 5000 : rng_.integer(50, 600));
-        ++counts_.ddtg_edges;
-      } else if (ddtg.command_w && (k >= ddtg_release_ || (release_on_active_ && s.delete_distance_to_go_active_r))) {
-        ddtg.command_w = false;
-        next_ddtg_ = k + gap(ddtg_mean_);
-      }
-    }
-    if (chaos && use_backward_ && k >= next_backward_ && !near_entry(s)) {
-      c.backward_motion = {!c.backward_motion.command_w, rng_.chance(0.95)};
-      next_backward_ = k + gap(backward_mean_);
-      ++counts_.backward_toggles;
-    }
-    acknowledge(k, s, c, chaos);
-  }
-
- private:
-  // A rising edge of m_function_ack.command_w (one cycle long) a random
-  // delay after m_function_request_r shows; a request still shown after an
-  // edge is a new one (or the old one, if the edge came without enable_w).
-  void acknowledge(int64_t k, const HliState& s, HliControl& c, bool chaos) {
-    ControlUnitBool& ack = c.m_function_ack;
-    if (ack.command_w) {
-      ack.command_w = false;
-    } else if (ack_at_ >= 0 && k >= ack_at_) {
-      ack = {true, !(chaos && rng_.chance(0.05))};
-      ack_at_ = -1;
-      ++counts_.m_acks;
-    } else if (chaos && spurious_acks_ && ack_at_ < 0 && rng_.chance(0.002)) {
-      ack = {true, true};  // unasked: ignored, or an early acknowledgement
-    } else {
-      ack.enable_w = true;
-    }
-    if (!ack.command_w && ack_at_ < 0 && s.m_function_request_r)
-      ack_at_ = k + 1 + (chaos ? rng_.integer(0, ack_delay_max_) : rng_.integer(0, 5));
-  }
-
-  int64_t gap(double mean) { return 1 + static_cast<int64_t>(rng_.uniform(0, 2 * mean)); }
-
-  bool near_entry(const HliState& s) const {
-    const auto it = block_ends_.find(s.block_count_r);
-    if (it == block_ends_.end()) return false;
-    const std::vector<double>& entry = s.backward_motion.state_r ? it->second.second : it->second.first;
-    double d2 = 0;
-    for (size_t i = 0; i < entry.size() && i < s.axis_position_r.size(); ++i) {
-      const double d = static_cast<double>(s.axis_position_r[i]) / hli_units_per_mm - entry[i];
-      d2 += d * d;
-    }
-    return d2 < 1e-6;  // 1 um
-  }
-
-  Rng rng_;
-  int64_t chaos_end_;
-  int32_t override_top_ = 1200;
-  bool use_feedhold_, use_override_, ramp_override_, use_ddtg_, use_backward_, spurious_acks_;
-  double feedhold_mean_, override_mean_, ddtg_mean_, backward_mean_;
-  int64_t ack_delay_max_;
-  bool calm_override_enable_;
-  int32_t calm_override_;
-  int64_t next_feedhold_, next_override_, next_ddtg_, next_backward_;
-  int64_t ddtg_release_ = 0;
-  bool release_on_active_ = false;
-  int64_t ack_at_ = -1;
-  std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> block_ends_;
-  PlcCounts counts_;
-};
 
 // Seconds the program needs at 100 %, every block from rest to rest: more
 // than the look-ahead needs.
@@ -277,7 +132,8 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   const double short_cut_s = std::isfinite(slowest) ? std::sqrt(extent_sq) / slowest * 1000.0 / calm_override_min : 0;
   const double calm_s = t100 * 1000.0 / calm_override_min + short_cut_s + program.dwell_s +
                         0.008 * static_cast<double>(program.m_functions.size()) + 2.0;
-  run.cycle_bound = run.chaos_cycles + static_cast<int64_t>(std::ceil(1.5 * calm_s / dt)) + 1000;
+  run.cycle_bound = run.chaos_cycles + static_cast<int64_t>(std::ceil(1.5 * calm_s / dt)) + 1000 +
+                    (options.insert_stops && options.random_plc ? 3000 : 0);  // a last stop, its continuation
   return run;
 }
 
@@ -293,13 +149,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
 
   cnc::Channel channel(machine, program.text);
   logger::LimitChecker checker(machine);
-  FuzzPlc plc(mix_seed(seed ^ 0x91c), run.chaos_cycles);
-  if (options.avoid_known_channel_bugs) {
-    std::map<int64_t, std::pair<std::vector<double>, std::vector<double>>> ends;
-    for (const cnc::Block& b : cnc::decode_program(program.text, machine, std::vector<double>(machine.axes.size(), 0.0)).blocks)
-      if (b.has_motion) ends[b.block_count] = {b.motion.start, b.motion.end};
-    plc.avoid_turns_at(std::move(ends));
-  }
+  FuzzPlc plc(mix_seed(seed ^ 0x91c), run.chaos_cycles, options.insert_stops && options.random_plc);
   HliControl control;
   control.program_start = {true, true};
   control.feedhold.enable_w = true;
@@ -328,7 +178,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       }
       const bool from_plc = e.nc_line == 0 && (e.message.rfind("override ", 0) == 0 ||
                                                e.message.rfind("program start ignored", 0) == 0);
-      if (!from_plc && run.event_log.size() < 16)
+      if (!from_plc && run.event_log.size() < 64)
         run.event_log.push_back("cycle " + std::to_string(k) + ": " + describe(e));
       if (e.severity == Severity::error)
         fail({"event", k, e.axis, "", e.value, e.limit, e.nc_line, "error event: " + describe(e)});
@@ -372,7 +222,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     if (line < 0 || line > lines)
       fail({"event", k, "", "block_count_r", static_cast<double>(line), static_cast<double>(lines), 0,
             "block_count_r is no line of the program"});
-    if (s.m_function_request_r &&
+    if (s.m_function_request_r && s.m_function_nr_r != FuzzPlc::insert_m_function &&
         std::find(program.m_functions.begin(), program.m_functions.end(), s.m_function_nr_r) == program.m_functions.end())
       fail({"event", k, "", "m_function_nr_r", static_cast<double>(s.m_function_nr_r), 0, line,
             "an M function the program does not have"});
@@ -518,7 +368,8 @@ std::string serialise(const FuzzRun& run) {
                    static_cast<double>(run.backward), static_cast<double>(run.m_output), static_cast<double>(run.events),
                    static_cast<double>(run.plc.feedhold_edges), static_cast<double>(run.plc.override_changes),
                    static_cast<double>(run.plc.ddtg_edges), static_cast<double>(run.plc.backward_toggles),
-                   static_cast<double>(run.plc.m_acks), static_cast<double>(run.failures.size()),
+                   static_cast<double>(run.plc.m_acks), static_cast<double>(run.plc.insert_commands),
+                   static_cast<double>(run.plc.insert_stops), static_cast<double>(run.failures.size()),
                    static_cast<double>(run.event_log.size())})
     put(out, x);
   for (const std::string& e : run.event_log) put(out, e);
@@ -549,6 +400,8 @@ bool deserialise(const std::string& in, FuzzRun& run) {
   run.plc.ddtg_edges = count();
   run.plc.backward_toggles = count();
   run.plc.m_acks = count();
+  run.plc.insert_commands = count();
+  run.plc.insert_stops = count();
   const int64_t failures = count();
   const int64_t logged = count();
   run.event_log.clear();

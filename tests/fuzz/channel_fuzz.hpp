@@ -62,16 +62,9 @@ struct FuzzOptions {
   int min_items = 4;
   int max_items = 24;
   bool random_plc = true;  // false: program start and prompt M acknowledgements only
-  // The PLC stays out of the channel's known bug (tests/unit/channel_known_bugs_test.cpp):
-  // a delete distance to go request met by an empty look-ahead while the
-  // channel is active makes Channel::leave_front() read an empty deque. So:
-  // no edge while backward motion is requested or active (the start of the
-  // stored contour, 50810 backward), in the last motion block (its stop
-  // ends where the look-ahead runs empty), nor after a 50810 warning. And
-  // a smaller one: no backward motion toggle within 1 um of where the path
-  // entered its block (a turn there drops a rest under 10 nm: the setpoint
-  // jumps by it, 1,100 mm/s^3 more jerk for 1.1 nm).
-  bool avoid_known_channel_bugs = false;
+  // Random insert stop commands (ISC-1 .. ISC-9) from the PLC, on a random
+  // stream of their own: false runs every seed exactly as before them.
+  bool insert_stops = true;
   // Called after every step (the bench's --trace).
   std::function<void(int64_t cycle, const cnc::Channel& channel, const HliControl& control)> observer;
   // Instead of the generated program, this text (a shrunk one, the bench's
@@ -94,6 +87,7 @@ struct Failure {
 
 struct PlcCounts {
   int64_t feedhold_edges = 0, override_changes = 0, ddtg_edges = 0, backward_toggles = 0, m_acks = 0;
+  int64_t insert_commands = 0, insert_stops = 0;  // ISC: commands written with the semaphore, stops continued
 };
 
 struct FuzzRun {

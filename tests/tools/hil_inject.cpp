@@ -3,7 +3,8 @@
 // the rig must refuse and survive: forged answers of this run with a cycle
 // far ahead, another run's answers, a message of the wrong type, datagrams
 // LCM 1.3.1 cannot frame (a channel name without NUL, through a raw UDP
-// socket), and it can kill a node at that cycle (its pid from a file).
+// socket), and it can kill or pause a node at that cycle (its pid from a
+// file).
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <signal.h>
@@ -22,6 +23,7 @@
 #include <fstream>
 #include <iostream>
 #include <regex>
+#include <thread>
 
 #include "channels.hpp"
 
@@ -69,6 +71,9 @@ int main(int argc, char** argv) {
   app.add_option("--wrong-type", wrong_type, "an hli_control_t of this run on AXIS_<A>_STATE");
   app.add_option("--unframed", unframed, "this many 19-byte datagrams on HLI_CONTROL with no NUL");
   app.add_option("--kill-pid-file", pid_file, "SIGKILL the process whose pid this file holds");
+  double pause_s = 0;
+  app.add_option("--pause-s", pause_s, "instead of a kill: SIGSTOP, and SIGCONT this many seconds later")
+      ->check(CLI::Range(0.0, 60.0));
   CLI11_PARSE(app, argc, argv);
 
   lcm::LCM lcm(url);
@@ -128,9 +133,13 @@ int main(int argc, char** argv) {
   if (!pid_file.empty()) {
     pid_t pid = 0;
     std::ifstream(pid_file) >> pid;
-    if (pid <= 0 || ::kill(pid, SIGKILL) != 0) {
-      std::cerr << "hil_inject: cannot kill pid " << pid << " from " << pid_file << '\n';
+    if (pid <= 0 || ::kill(pid, pause_s > 0 ? SIGSTOP : SIGKILL) != 0) {
+      std::cerr << "hil_inject: cannot signal pid " << pid << " from " << pid_file << '\n';
       return 1;
+    }
+    if (pause_s > 0) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(pause_s));
+      ::kill(pid, SIGCONT);
     }
   }
   std::cout << "hil_inject: acted at cycle " << k << " of run " << rig.run_id << '\n';

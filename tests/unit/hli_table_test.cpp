@@ -50,7 +50,14 @@ void check_every_field(RoundTrip round_trip) {
 }  // namespace
 
 TEST_CASE("KRN-4 HLI table: every control field written by name reaches the LCM message and back", "[hli]") {
-  CHECK(hli_fields<HliControl>().size() == 14);  // 7 control units, command_w and enable_w each
+  // 9 control units with command_w and enable_w; insert_cmd (ISC-1): 5 command_w fields, enable_w, semaphor_rw.
+  CHECK(hli_fields<HliControl>().size() == 25);
+  CHECK(std::string(find_hli_field<HliControl>("insert_cmd.command_w.dist_or_pos")->type) == "LREAL");
+  CHECK(std::string(find_hli_field<HliControl>("insert_cmd.command_w.rel_abs_mode")->type) == "UINT");
+  CHECK(std::string(find_hli_field<HliControl>("insert_cmd.command_w.add_nr")->type) == "DINT");
+  CHECK(std::string(find_hli_field<HliControl>("insert_cmd.semaphor_rw")->type) == "BOOL");
+  CHECK(find_hli_field<HliControl>("continue_motion.command_w") != nullptr);
+  CHECK(find_hli_field<HliControl>("m01_stop_enable.command_w") != nullptr);
   check_every_field<HliControl>(control_round_trip);
   CHECK(std::string(find_hli_field<HliControl>("program_start.command_w")->type) == "BOOL");
   CHECK(std::string(find_hli_field<HliControl>("override.command_w")->type) == "DINT");
@@ -63,7 +70,10 @@ TEST_CASE("KRN-4 HLI table: every state field read by name comes through the LCM
   for (const char* name : {"program_start.request_r", "feedhold.state_r", "override.state_r",
                            "delete_distance_to_go.state_r", "delete_distance_to_go_activation.state_r",
                            "backward_motion.request_r", "m_function_request_r", "m_function_nr_r",
-                           "stop_conditions_r", "block_nr_r", "delete_distance_to_go_active_r"}) {
+                           "stop_conditions_r", "block_nr_r", "delete_distance_to_go_active_r",
+                           "insert_cmd.semaphor_rw", "insert_cmd.state_r.distance_of_next_stop",
+                           "insert_cmd.state_r.position_at_next_stop[0]", "insert_cmd.state_r.position_at_next_stop[2]",
+                           "insert_cmd.state_r.state", "m_function_add_nr_r", "continue_motion.state_r"}) {
     INFO(name);
     CHECK(find_hli_field<HliState>(name) != nullptr);
   }

@@ -68,7 +68,7 @@ TEST_CASE("RIG-6 lock-step: only the answer to the cycle waited for, first; a fo
 TEST_CASE("RIG-6 lock-step: a silent participant is lost once, then not waited for; a silent logger too",
           "[traffic]") {
   cnc_node::LockStep lock_step(test::xyz_machine(), true, 5000, 2000);
-  lock_step.logger_alive(1'000'000);
+  lock_step.logger_alive(1'000'000, -1);
   lock_step.begin(7);
   lock_step.take_axis(0, 7, 0);
   lock_step.take_axis(2, 7, 0);
@@ -95,6 +95,48 @@ TEST_CASE("RIG-6 lock-step: a silent participant is lost once, then not waited f
   CHECK(taken.lost[0].name == "logger");
   CHECK(taken.lost[0].axis.empty());
   CHECK(lock_step.lost() == std::vector<std::pair<std::string, int64_t>>{{"axis_sim Y", 7}, {"logger", 8}});
+}
+
+TEST_CASE("RIG-9 lock-step: the cnc waits while the logger is more than 128 cycles behind, and loses it when it "
+          "does not catch up within its timeout",
+          "[traffic]") {
+  cnc_node::LockStep lock_step(test::xyz_machine(), true, 5000, 2000);
+  lock_step.logger_alive(1'000'000, -1);
+  lock_step.begin(127);
+  CHECK_FALSE(lock_step.logger_behind());  // cycles 0..127 may be on their way
+  lock_step.begin(128);
+  CHECK(lock_step.logger_behind());
+  lock_step.logger_alive(1'100'000, 1);  // the logger has recorded cycle 1
+  CHECK_FALSE(lock_step.logger_behind());
+  lock_step.begin(500);
+  CHECK(lock_step.logger_behind());
+  lock_step.logger_alive(1'200'000, 0);  // an older heartbeat takes nothing back
+  lock_step.check_logger(1'300'000);     // behind from now on, heartbeats flowing
+  lock_step.logger_alive(3'200'000, 300);
+  lock_step.check_logger(3'250'000);  // 1.95 s behind: within its timeout
+  CHECK(lock_step.take().lost.empty());
+  lock_step.logger_alive(3'300'000, 300);
+  lock_step.check_logger(3'350'000);  // 2.05 s behind
+  const cnc_node::LockStep::Taken taken = lock_step.take();
+  REQUIRE(taken.lost.size() == 1);
+  CHECK(taken.lost[0].name == "logger");
+  CHECK(taken.lost[0].what ==
+        "it has recorded up to cycle 300 and not caught up with cycle 500 within 2000 ms: the run is no longer recorded");
+  CHECK_FALSE(lock_step.logger_behind());  // lost: no longer waited for
+}
+
+TEST_CASE("RIG-9 lock-step: a logger that catches up is not lost", "[traffic]") {
+  cnc_node::LockStep lock_step(test::xyz_machine(), true, 5000, 2000);
+  lock_step.logger_alive(0, -1);
+  lock_step.begin(1000);
+  lock_step.check_logger(100'000);
+  lock_step.logger_alive(1'000'000, 900);
+  lock_step.check_logger(1'000'000);  // caught up: the clock starts again
+  lock_step.begin(2000);
+  lock_step.check_logger(1'500'000);
+  lock_step.logger_alive(2'400'000, 1000);
+  lock_step.check_logger(2'400'000);  // behind for 0.9 s only
+  CHECK(lock_step.take().lost.empty());
 }
 
 TEST_CASE("RIG-9 verdict: a failed expectation FAILS as a verdict, a crash as a crash; both need every exit 0",

@@ -1,0 +1,48 @@
+#include "axis_crossing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "path_segment.hpp"
+
+namespace hil::cnc {
+
+// Lines are affine in s, so the first sample interval with a sign change
+// holds the crossing; an arc is sampled every 0.1 mm of path at least, and
+// the crossing found by bisection (a circle that only touches the position
+// between two samples is missed: below 0.1 mm of path, ~1e-3 mm in axis).
+std::optional<double> covered_until_axis_reaches(const std::vector<Motion>& motions, size_t axis, double position,
+                                                 const MachineConfig& machine) {
+  constexpr double on = 1e-7;  // mm: standing on the position
+  double covered = 0;
+  for (const Motion& motion : motions) {
+    const PathSegment seg(motion, machine);
+    const double length = seg.length();
+    if (!std::isfinite(length)) return std::nullopt;
+    auto f = [&](double s) { return seg.position(s)[axis] - position; };
+    if (std::abs(f(0)) <= on) return covered;
+    const int n = motion.type == MotionType::arc_cw || motion.type == MotionType::arc_ccw
+                      ? static_cast<int>(std::clamp(std::ceil(length / 0.1), 16.0, 1e5))
+                      : 1;
+    double s0 = 0, f0 = f(0);
+    for (int i = 1; i <= n && length > 0; ++i) {
+      const double s1 = length * i / n, f1 = f(s1);
+      if (std::abs(f1) <= on || (f0 < 0) != (f1 < 0)) {
+        double lo = s0, hi = s1;
+        if (std::abs(f1) > on)
+          for (int k = 0; k < 100 && hi - lo > 1e-12; ++k) {
+            const double mid = 0.5 * (lo + hi);
+            if ((f(mid) < 0) == (f0 < 0)) lo = mid;
+            else hi = mid;
+          }
+        return covered + seg.covered_distance() * hi / length;
+      }
+      s0 = s1;
+      f0 = f1;
+    }
+    covered += seg.covered_distance();
+  }
+  return std::nullopt;
+}
+
+}  // namespace hil::cnc

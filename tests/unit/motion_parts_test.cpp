@@ -1,0 +1,83 @@
+// The way on or back along a block from where the path stands (KRN-5,
+// DDTG-6): cnc/path/motion_parts.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "motion_parts.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+
+namespace {
+
+Motion line(std::vector<double> start, std::vector<double> end, MotionType type = MotionType::linear) {
+  Motion m;
+  m.type = type;
+  m.start = std::move(start);
+  m.end = std::move(end);
+  m.feed = type == MotionType::rapid ? 0 : 50;
+  return m;
+}
+
+// A G03 quarter circle around (0, 0) from (10, 0) to (0, 10).
+Motion quarter_circle() {
+  Motion m = line({10, 0, 0}, {0, 10, 0}, MotionType::arc_ccw);
+  m.center_x = m.center_y = 0;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("KRN-5 rest_of_motion: the block's own part from a point on it", "[path][backward]") {
+  const MachineConfig machine = test::xyz_machine();
+  const auto on = rest_of_motion(line({0, 0, 0}, {10, 0, 0}), {4, 0, 0}, false, machine);
+  REQUIRE(on);
+  CHECK(on->start == std::vector<double>{4, 0, 0});
+  CHECK(on->end == std::vector<double>{10, 0, 0});
+  const auto back = rest_of_motion(line({0, 0, 0}, {10, 0, 0}), {4, 0, 0}, true, machine);
+  REQUIRE(back);
+  CHECK(back->start == std::vector<double>{4, 0, 0});
+  CHECK(back->end == std::vector<double>{0, 0, 0});
+  const double r = 10 / std::sqrt(2.0);
+  const auto arc = rest_of_motion(quarter_circle(), {r, r, 0}, false, machine);
+  REQUIRE(arc);
+  CHECK(arc->type == MotionType::arc_ccw);  // still the arc, from the point on it
+  const auto arc_back = rest_of_motion(quarter_circle(), {r, r, 0}, true, machine);
+  REQUIRE(arc_back);
+  CHECK(arc_back->type == MotionType::arc_cw);  // reversed
+  CHECK(arc_back->end == std::vector<double>{10, 0, 0});
+  CHECK_FALSE(rest_of_motion(line({0, 0, 0}, {10, 0, 0}), {10, 0, 0}, false, machine));  // nothing left
+}
+
+TEST_CASE("KRN-5 DDTG-6 rest_of_motion: a straight line from a point off the block or under 10 nm from its end",
+          "[path][backward]") {
+  const MachineConfig machine = test::xyz_machine();
+  // Off the arc (where a short cut ended midway): not an arc from off its circle.
+  const auto off = rest_of_motion(quarter_circle(), {3, 4, 0}, false, machine);
+  REQUIRE(off);
+  CHECK(off->type == MotionType::linear);
+  CHECK(off->start == std::vector<double>{3, 4, 0});
+  CHECK(off->end == std::vector<double>{0, 10, 0});
+  // 4 nm before the arc's end: a line, not the arc's full circle.
+  const double a = std::atan2(1.0, 0.0) - 4e-7;  // 4e-6 mm on R 10
+  const auto tiny = rest_of_motion(quarter_circle(), {10 * std::cos(a), 10 * std::sin(a), 0}, false, machine);
+  REQUIRE(tiny);
+  CHECK(tiny->type == MotionType::linear);
+  CHECK(std::hypot(tiny->end[0] - tiny->start[0], tiny->end[1] - tiny->start[1]) < 1e-5);
+  // A G00 block stays G00 (no F may be programmed at all).
+  const auto rapid = rest_of_motion(line({0, 0, 0}, {10, 0, 0}, MotionType::rapid), {4, 1, 0}, false, machine);
+  REQUIRE(rapid);
+  CHECK(rapid->type == MotionType::rapid);
+}
+
+TEST_CASE("KRN-5 rest_of_motion: on a full circle its start is its end, the hint tells which", "[path][backward]") {
+  const MachineConfig machine = test::xyz_machine();
+  Motion circle = line({10, 0, 0}, {10, 0, 0}, MotionType::arc_ccw);
+  circle.center_x = circle.center_y = 0;
+  const auto from_start = rest_of_motion(circle, {10, 0, 0}, false, machine, false);
+  REQUIRE(from_start);  // the whole circle ahead
+  CHECK(from_start->type == MotionType::arc_ccw);
+  CHECK_FALSE(rest_of_motion(circle, {10, 0, 0}, false, machine, true));  // at its end: nothing left
+}
