@@ -76,6 +76,7 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     p.lines.clear();
     p.clear_lines.clear();
     p.has_dps_off = false;
+    p.contoured = false;
     for (size_t begin = 0; begin < p.text.size();) {
       const size_t end = std::min(p.text.find('\n', begin), p.text.size());
       p.lines.push_back(p.text.substr(begin, end - begin));
@@ -85,6 +86,7 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       if (p.lines[i].find("#DISTANCE PROG START CLEAR") != std::string::npos)
         p.clear_lines.push_back(static_cast<int64_t>(i) + 1);
       p.has_dps_off = p.has_dps_off || p.lines[i].find("#DISTANCE PROG START OFF") != std::string::npos;
+      p.contoured = p.contoured || switches_contouring_on(p.lines[i]);
     }
   }
   const GeneratedProgram& program = run.program;
@@ -252,7 +254,10 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       if (std::abs(change) > dps_step_limit * (1 + 1e-6) + tol)
         fail({"dist_prog_start", k, "", "dist_prog_start change (mm) in one cycle", change, dps_step_limit, line,
               "more than the path can cover in one cycle"});
-      if (dps_counts_all && backward == previous_backward && std::abs(change) < chord * (1 - 1e-6) - tol)
+      // A contouring curve a little longer than the blocks' parts it
+      // replaces: 1e-4 of it in 1000 contoured programs (docs/CONTOURING.md).
+      const double slower = program.contoured ? 1e-3 : 1e-6;
+      if (dps_counts_all && backward == previous_backward && std::abs(change) < chord * (1 - slower) - tol)
         fail({"dist_prog_start", k, "", "dist_prog_start change (mm) in one cycle", change, chord, line,
               "less than the chord the main axes moved (DPS-1)"});
     }

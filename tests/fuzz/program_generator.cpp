@@ -124,6 +124,7 @@ class Generator {
     out_.end_position[iy_] = pos_[1];
     out_.end_position[iz_] = pos_[2];
     out_.dist_prog_start_end_mm = dps_;
+    for (const std::string& line : out_.lines) out_.contoured = out_.contoured || switches_contouring_on(line);
     return out_;
   }
 
@@ -528,6 +529,12 @@ class Generator {
 };
 
 }  // namespace
+
+bool switches_contouring_on(const std::string& line) {
+  for (const char* on : {"G261", "G61", "#CONTOUR MODE ON"})
+    if (line.find(on) != std::string::npos) return true;
+  return false;
+}
 
 GeneratedProgram generate_program(uint64_t seed, const ProgramOptions& options, const MachineConfig& machine) {
   return Generator(seed, options, machine).run();

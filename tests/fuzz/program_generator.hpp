@@ -61,11 +61,18 @@ struct GeneratedProgram {
   double dist_prog_start_end_mm = 0;
   std::vector<int64_t> clear_lines;  // lines of #DISTANCE PROG START CLEAR
   bool has_dps_off = false;          // some #DISTANCE PROG START OFF
+  // Polynomial contouring somewhere (KRN-6): on a contouring curve
+  // dist_prog_start counts the programmed distance the curve replaces, so
+  // where the curve is longer it grows slower than the path moves.
+  bool contoured = false;
   std::vector<int> m_functions;      // every M function output (not M30), in order
   int motion_blocks = 0;
   double dwell_s = 0;                // sum of #TIME
   double path_length_mm = 0;         // sum of block lengths
 };
+
+// G261, G61 or #CONTOUR MODE ON on the line (KRN-6).
+bool switches_contouring_on(const std::string& line);
 
 GeneratedProgram generate_program(uint64_t seed, const ProgramOptions& options, const MachineConfig& machine);
 

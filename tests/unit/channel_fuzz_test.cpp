@@ -30,27 +30,26 @@ TEST_CASE("channel fuzz: the generator writes programs the decoder takes, the sa
     CHECK(all.find(feature) != std::string::npos);
 }
 
-TEST_CASE("KRN-3 DDTG-1 KRN-5 DPS-1 channel fuzz: random programs and PLC edges keep every axis' limits and the "
-          "channel's invariants, cycle by cycle",
-          "[fuzz]") {
-  // Seeds 1 .. 2500, the program kinds in turn (mixed, lines, arcs, steps,
-  // commands), each with its random PLC (feed hold, override 0 .. 120 %,
-  // delete distance to go with and without activation masks, backward
-  // motion, late M acknowledgements), checked as tests/fuzz/channel_fuzz.hpp
-  // says. Left out: random insert stop commands, whose combination with
-  // backward motion is a known bug (channel_known_bugs_test.cpp).
-  FuzzOptions options;
-  options.insert_stops = false;
-  constexpr int64_t first = 1, runs = 2500;
-  int64_t cycles = 0, failed = 0, shown = 0, short_cuts = 0, backward = 0, m_output = 0, random_plc = 0;
+namespace {
+
+struct SeedRange {
+  int64_t runs = 0, cycles = 0, failed = 0, short_cuts = 0, backward = 0, m_output = 0;
+};
+
+// Runs seeds first .. first + runs - 1, reports every failure (at most 40)
+// and prints what the random PLC did.
+SeedRange run_seeds(int64_t first, int64_t runs, const FuzzOptions& options, const char* name) {
+  SeedRange r;
+  r.runs = runs;
+  int64_t shown = 0, random_plc = 0;
   PlcCounts plc;
   const auto t0 = std::chrono::steady_clock::now();
   for (int64_t seed = first; seed < first + runs; ++seed) {
     const FuzzRun run = run_channel_fuzz_isolated(static_cast<uint64_t>(seed), options);
-    cycles += run.cycles;
-    short_cuts += run.short_cut;
-    backward += run.backward;
-    m_output += run.m_output;
+    r.cycles += run.cycles;
+    r.short_cuts += run.short_cut;
+    r.backward += run.backward;
+    r.m_output += run.m_output;
     random_plc += run.chaos_cycles > 0;
     plc.feedhold_edges += run.plc.feedhold_edges;
     plc.override_changes += run.plc.override_changes;
@@ -60,23 +59,54 @@ TEST_CASE("KRN-3 DDTG-1 KRN-5 DPS-1 channel fuzz: random programs and PLC edges 
     plc.insert_commands += run.plc.insert_commands;
     plc.insert_stops += run.plc.insert_stops;
     if (run.passed()) continue;
-    ++failed;
+    ++r.failed;
     for (const Failure& f : run.failures)
-      if (++shown <= 40) FAIL_CHECK(describe(run, f) << "\n  reproduce: build/bin/channel_fuzz --seed " << seed
-                                                     << " --runs 1 --print-program");
+      if (++shown <= 40)
+        FAIL_CHECK(describe(run, f) << "\n  reproduce: build/bin/channel_fuzz --seed " << seed << " --runs 1"
+                                    << (options.kind ? std::string(" --program-kind ") + to_string(*options.kind) : "")
+                                    << " --print-program");
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::cout << "channel fuzz: " << runs << " runs (seeds " << first << " .. " << first + runs - 1 << "), " << cycles
-            << " cycles in " << seconds << " s; " << random_plc << " with the random PLC (" << plc.feedhold_edges
-            << " feed hold edges, " << plc.override_changes << " override changes, " << plc.ddtg_edges
-            << " delete distance to go edges, " << plc.backward_toggles << " backward motion toggles, "
-            << plc.m_acks << " M acknowledgements, " << plc.insert_commands << " insert stop commands, "
-            << plc.insert_stops << " stops continued), " << short_cuts << " with a short cut, " << backward
-            << " with backward motion, " << m_output << " with M functions; " << failed << " failed\n";
-  CHECK(failed == 0);
+  std::cout << "channel fuzz (" << name << "): " << runs << " runs (seeds " << first << " .. " << first + runs - 1
+            << "), " << r.cycles << " cycles in " << seconds << " s; " << random_plc << " with the random PLC ("
+            << plc.feedhold_edges << " feed hold edges, " << plc.override_changes << " override changes, "
+            << plc.ddtg_edges << " delete distance to go edges, " << plc.backward_toggles
+            << " backward motion toggles, " << plc.m_acks << " M acknowledgements, " << plc.insert_commands
+            << " insert stop commands, " << plc.insert_stops << " stops continued), " << r.short_cuts
+            << " with a short cut, " << r.backward << " with backward motion, " << r.m_output
+            << " with M functions; " << r.failed << " failed\n";
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("KRN-3 DDTG-1 KRN-5 DPS-1 ISC-3 channel fuzz: random programs and PLC edges keep every axis' limits and "
+          "the channel's invariants, cycle by cycle",
+          "[fuzz]") {
+  // Seeds 1 .. 2500, the program kinds in turn (mixed, lines, arcs, steps,
+  // commands), each with its random PLC (feed hold, override 0 .. 120 %,
+  // delete distance to go with and without activation masks, backward
+  // motion, late M acknowledgements, insert stop commands), checked as
+  // tests/fuzz/channel_fuzz.hpp says.
+  const SeedRange r = run_seeds(1, 2500, FuzzOptions{}, "all kinds");
+  CHECK(r.failed == 0);
   // The fuzz reaches what it is for.
-  CHECK(short_cuts > runs / 10);
-  CHECK(backward > runs / 10);
-  CHECK(m_output > runs / 10);
-  CHECK(cycles > 10'000'000);
+  CHECK(r.short_cuts > r.runs / 10);
+  CHECK(r.backward > r.runs / 10);
+  CHECK(r.m_output > r.runs / 10);
+  CHECK(r.cycles > 10'000'000);
+}
+
+TEST_CASE("KRN-6 KRN-3 KRN-5 DPS-1 channel fuzz, contour kind: polynomial contouring under the random PLC keeps "
+          "every axis' limits",
+          "[fuzz][contour]") {
+  // #CONTOUR MODE, G261/G260/G61, G60/G360/G359 over CAM polylines, near-
+  // collinear joints and reversals; backward motion and turns inside the
+  // curves, insert stops splitting them (docs/CONTOURING.md).
+  FuzzOptions options;
+  options.kind = ProgramKind::contour;
+  const SeedRange r = run_seeds(1, 400, options, "contour");
+  CHECK(r.failed == 0);
+  CHECK(r.backward > r.runs / 10);
+  CHECK(r.short_cuts > r.runs / 10);
 }

@@ -291,11 +291,12 @@ TEST_CASE("ISC-3 ISC-6 ISC-9 KRN-5 random insert stop commands with backward mot
   }
 }
 
-TEST_CASE("ISC-3 DPS-1 known bug: an insert stop at a block end stops 1.5e-6 mm short, then snaps", "[.][known-bug]") {
-  // H: seed 170 (random insert stop commands): a POSITION mark the axis
-  // never reaches lies at the program end; the path stands 1.5e-6 mm before
-  // N230's end and moves the rest in the next cycle without
-  // dist_prog_start counting it.
+TEST_CASE("ISC-3 DPS-1 KRN-3 a restart 1.5e-6 mm before a block end moves the rest as a line, counted", "[channel]") {
+  // H: seed 170 (random insert stop commands): the path stood 1.5e-6 mm
+  // before N230's end (a feed hold's braking) when an insert stop rebuilt
+  // its look-ahead; the rest, under 10 nm, was dropped and the path moved
+  // it in the next cycle without dist_prog_start counting it. Now
+  // restart_here() takes rest_of_motion() (a straight line for such rests).
   hil::fuzz::FuzzOptions options;
   CHECK(hil::fuzz::run_channel_fuzz_isolated(170, options).passed());
 }
@@ -341,4 +342,19 @@ TEST_CASE("KRN-3 known bug: override changes while braking through a curvature s
   options.insert_stops = false;
   const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(2042447, options);
   for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+}
+
+TEST_CASE("ISC-3 KRN-3 KRN-6 an insert stop on a stretch's end but for round-off: the plan ends at rest there",
+          "[channel][contour]") {
+  // Contour fuzz seed 870: a stop placed at a piece's end came out 1e-16
+  // beyond the stretch the plan ran to, so the plan kept v_end = 6.7 mm/s
+  // there while interpolate() held the path on the stop: 6,468 mm/s^2 on Y.
+  // Seed 764: a restart 4.6 nm before a block end (as H above).
+  hil::fuzz::FuzzOptions options;
+  options.kind = hil::fuzz::ProgramKind::contour;
+  for (uint64_t seed : {764u, 870u}) {
+    INFO("seed " << seed);
+    const hil::fuzz::FuzzRun run = hil::fuzz::run_channel_fuzz_isolated(seed, options);
+    for (const hil::fuzz::Failure& f : run.failures) FAIL_CHECK(hil::fuzz::describe(run, f));
+  }
 }
