@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <limits>
 
 #include "config_error.hpp"
@@ -18,7 +19,8 @@ const std::vector<std::string> axis_keys = {
     "name", "v_max", "v_rapid", "a_max", "j_max", "kv", "velocity_lag_s", "velocity_loop_order",
     "velocity_damping", "velocity_feedforward", "drive_acceleration_limit", "friction_coulomb", "friction_viscous",
     "dyn_monitoring_a_warn", "dyn_monitoring_a_err", "dyn_monitoring_v_warn", "dyn_monitoring_v_err",
-    "slep_max", "slep_min", "following_error_monitoring", "swe_neg", "swe_pos", "swe_toleranz"};
+    "slep_max", "slep_min", "following_error_monitoring", "swe_neg", "swe_pos", "swe_toleranz",
+    "modulo_lower", "modulo_upper"};
 
 constexpr int64_t int32_max = std::numeric_limits<int32_t>::max();
 
@@ -86,6 +88,20 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
   } else if (m.has("swe_toleranz")) {  // would be ignored: nothing to widen
     throw ConfigError(at + ": P-AXIS-00179 swe_toleranz needs P-AXIS-00177 swe_neg and P-AXIS-00178 swe_pos");
   }
+
+  if (m.has("modulo_lower") || m.has("modulo_upper")) {  // KRN-7
+    if (!m.has("modulo_lower") || !m.has("modulo_upper"))
+      throw ConfigError(at + ": a modulo axis needs both modulo_lower and modulo_upper");
+    if (axis.name.find_first_of("ABC") == std::string::npos)
+      throw ConfigError(at + ": only the rotary axes A, B, C can be modulo axes");
+    if (axis.software_limits)
+      throw ConfigError(at + ": a modulo axis has no software limit switches (P-AXIS-00177 / 00178)");
+    axis.modulo = true;
+    axis.modulo_lower = m.number("modulo_lower");
+    axis.modulo_upper = m.number("modulo_upper");
+    if (!(axis.modulo_lower < axis.modulo_upper))
+      throw ConfigError(at + ": modulo_lower must be below modulo_upper");
+  }
   return axis;
 }
 
@@ -118,6 +134,15 @@ MachineConfig read_machine(const YAML::Node& node) {
 }
 
 }  // namespace
+
+double AxisConfig::in_modulo_range(double position) const {
+  if (!modulo) return position;
+  const double range = modulo_range();
+  double shifted = std::fmod(position - modulo_lower, range);
+  if (shifted < 0) shifted += range;
+  if (shifted >= range) shifted = 0;  // round-off of fmod + range
+  return modulo_lower + shifted;
+}
 
 int MachineConfig::axis_index(const std::string& axis_name) const {
   for (size_t i = 0; i < axes.size(); ++i)

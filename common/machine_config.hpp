@@ -45,6 +45,17 @@ struct AxisConfig {
   bool software_limits = false;
   double swe_neg = 0, swe_pos = 0;  // mm
   double swe_toleranz = 0.1;        // mm
+  // KRN-7: a rotary modulo axis (A, B or C; units deg instead of mm): its
+  // positions repeat every modulo_upper - modulo_lower (a C axis: 0 and
+  // 360). Commanded and driven continuously (many revolutions); shown on
+  // the HLI, programmed absolute (G90) and searched by an absolute insert
+  // stop (ISC-4) within [modulo_lower, modulo_upper).
+  bool modulo = false;
+  double modulo_lower = 0, modulo_upper = 0;
+
+  double modulo_range() const { return modulo_upper - modulo_lower; }
+  // The position shifted into the modulo range; itself on a linear axis.
+  double in_modulo_range(double position) const;
 
   double accel_warning_limit() const { return a_max * dyn_monitoring_a_warn / 1000.0; }
   double accel_error_limit() const { return a_max * dyn_monitoring_a_err / 1000.0; }

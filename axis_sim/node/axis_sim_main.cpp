@@ -55,6 +55,7 @@ class AxisSimNode {
     s.axis = axis_.name;
     s.setpoint_position = m.position;
     s.position = out.position;
+    s.modulo_position = axis_.in_modulo_range(out.position);
     s.velocity = out.velocity;
     s.acceleration = out.acceleration;
     s.following_error = out.following_error;

@@ -12,14 +12,25 @@ namespace hil::cnc {
 // the crossing found by bisection (a circle that only touches the position
 // between two samples is missed: below 0.1 mm of path, ~1e-3 mm in axis).
 std::optional<double> covered_until_axis_reaches(const std::vector<Motion>& motions, size_t axis, double position,
-                                                 const MachineConfig& machine) {
+                                                 const MachineConfig& machine, bool modulo) {
   constexpr double on = 1e-7;  // mm: standing on the position
   double covered = 0;
   for (const Motion& motion : motions) {
     const PathSegment seg(motion, machine);
     const double length = seg.length();
     if (!std::isfinite(length)) return std::nullopt;
-    auto f = [&](double s) { return seg.position(s)[axis] - position; };
+    // A modulo axis is no arc axis (A, B, C): it moves one way on a block,
+    // so the position it meets first lies ahead of it in that way.
+    double target = position;
+    if (modulo) {
+      const double range = machine.axes[axis].modulo_range(), from = seg.position(0)[axis];
+      const bool up = seg.end()[axis] >= from;
+      double ahead = std::fmod(up ? position - from : from - position, range);
+      if (ahead < 0) ahead += range;
+      if (range - ahead <= on) ahead = 0;
+      target = up ? from + ahead : from - ahead;
+    }
+    auto f = [&](double s) { return seg.position(s)[axis] - target; };
     if (std::abs(f(0)) <= on) return covered;
     const int n = motion.type == MotionType::arc_cw || motion.type == MotionType::arc_ccw
                       ? static_cast<int>(std::clamp(std::ceil(length / 0.1), 16.0, 1e5))

@@ -212,8 +212,8 @@ void Channel::write_state() {
   hli_.backward_motion.state_r = path_.direction() == TravelDirection::backward;
   ddtg_.write(hli_);
   insert_.write(hli_, path_);
-  for (size_t i = 0; i < machine_.axes.size(); ++i)
-    hli_.axis_position_r[i] = std::llround(setpoints()[i].position * hli_units_per_mm);
+  for (size_t i = 0; i < machine_.axes.size(); ++i)  // a modulo axis within its range (KRN-7)
+    hli_.axis_position_r[i] = std::llround(machine_.axes[i].in_modulo_range(setpoints()[i].position) * hli_units_per_mm);
   hli_.program_start.state_r = hli_.channel_state == ChannelState::active;
   hli_.stop_conditions_r = hold().stop_conditions() | programmed_stop_.stop_conditions() | insert_.stop_conditions();
   if (hli_.override.state_r == 0) hli_.stop_conditions_r |= stop_condition::override_zero;

@@ -81,7 +81,10 @@ bool InsertStop::set_pending(PathInterpolator& path, double t, double distance_m
     }
     const double now = path.setpoints()[c.axis_nr - 1].position;
     mark.iterative = c.rel_abs_mode == 0;
-    mark.axis_target = c.rel_abs_mode == 1 ? d : now + d;
+    // KRN-7: absolute on a modulo axis is shifted into its range (the next
+    // time it gets there: at most a revolution); relative counts the
+    // axis' travel (several revolutions if asked).
+    mark.axis_target = c.rel_abs_mode == 1 ? machine_.axes[c.axis_nr - 1].in_modulo_range(d) : now + d;
     set_position_mark(path, t, mark, events);
     return true;
   }
@@ -101,8 +104,10 @@ bool InsertStop::set_pending(PathInterpolator& path, double t, double distance_m
 }
 
 void InsertStop::set_position_mark(PathInterpolator& path, double t, Mark mark, ChannelEvents& events) {
-  const std::optional<double> along = covered_until_axis_reaches(path.path_ahead(), mark.command.axis_nr - 1,
-                                                                 mark.axis_target, machine_);
+  const size_t axis = static_cast<size_t>(mark.command.axis_nr - 1);
+  const bool any_revolution = machine_.axes[axis].modulo && mark.command.rel_abs_mode == 1;
+  const std::optional<double> along =
+      covered_until_axis_reaches(path.path_ahead(), axis, mark.axis_target, machine_, any_revolution);
   if (!along)
     events.raise(events.at_block(Severity::info, "insert stop: the axis does not reach the position in this "
                                                  "program; the stop lies at its end"));
@@ -197,7 +202,8 @@ void InsertStop::write(HliState& hli, const PathInterpolator& path) const {
     return static_cast<int32_t>(std::clamp<long long>(std::llround(mm * hli_units_per_mm), INT32_MIN, INT32_MAX));
   };
   if (mark_->command.axis_nr > 0) {
-    s.position_at_next_stop[0] = hli_position(placed->position[mark_->command.axis_nr - 1]);
+    const size_t axis = static_cast<size_t>(mark_->command.axis_nr - 1);
+    s.position_at_next_stop[0] = hli_position(machine_.axes[axis].in_modulo_range(placed->position[axis]));
   } else {
     for (size_t i = 0; i < 3 && i < placed->position.size(); ++i) s.position_at_next_stop[i] = hli_position(placed->position[i]);
   }

@@ -59,6 +59,18 @@ std::vector<double> programmed_target(const std::vector<std::optional<double>>& 
   auto programmed = [&](double current, double word) { return absolute ? word : current + word; };
   for (size_t a = 0; a < axis_words.size(); ++a)
     if (axis_words[a]) target[a] = programmed(position[a], *axis_words[a]) + (absolute ? state.offset[a] : 0.0);
+  // KRN-7: G90 on a modulo axis goes to the position shifted into the
+  // modulo range, the shorter way round (half a revolution: positive); G91
+  // may turn several revolutions.
+  for (size_t a = 0; a < axis_words.size(); ++a) {
+    const AxisConfig& axis = state.machine.axes[a];
+    if (!axis_words[a] || !absolute || !axis.modulo) continue;
+    const double range = axis.modulo_range();
+    double turn = axis.in_modulo_range(target[a]) - axis.in_modulo_range(position[a]);
+    if (turn > range / 2) turn -= range;
+    else if (turn <= -range / 2) turn += range;
+    target[a] = position[a] + turn;
+  }
   if (!state.cs) return target;
   // In a #CS one main axis word can move all three main axes.
   Eigen::Vector3d point = to_program(state, position);

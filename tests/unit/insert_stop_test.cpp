@@ -491,3 +491,34 @@ TEST_CASE("ISC-4 POSITION table: relative once, absolute at the current position
     CHECK(rig.within_limits());
   }
 }
+
+TEST_CASE("ISC-4 KRN-7 modulo axis: absolute shifted into the range (at most a revolution), relative over several",
+          "[insert_stop][modulo]") {
+  // Fig. 6: G90 C300 turns -60 deg; an absolute stop at 90 deg is the first
+  // 90 after that, 150 deg up on N20 (210 deg of C travel).
+  {
+    Rig rig("N10 G01 G90 C300 F10800\nN20 G91 C720\nN30 M30\n", test::xyzc_machine());
+    rig.insert(900000, 1, 0, 4);
+    rig.start();
+    REQUIRE(rig.run_to_stop());
+    CHECK(rig.at_stop());
+    CHECK(rig.channel.setpoints()[3].position == Approx(90).margin(1e-6));
+    CHECK(rig.dist() == Approx(210).margin(1e-6));
+    CHECK(rig.hli().insert_cmd.state_r.position_at_next_stop[0] == 900000);
+    rig.continue_motion();
+    REQUIRE(rig.run_to_end());
+    CHECK(rig.hli().axis_position_r[3] == 3000000);  // -60 + 720 = 660: shown 300
+    CHECK(rig.within_limits());
+  }
+  // Fig. 5: relative 450 deg from 0: one and a quarter revolutions.
+  {
+    Rig rig("N10 G01 G91 C1080 F10800\nN20 M30\n", test::xyzc_machine());
+    rig.insert(4500000, 2, 0, 4);
+    rig.start();
+    REQUIRE(rig.run_to_stop());
+    CHECK(rig.channel.setpoints()[3].position == Approx(450).margin(1e-6));
+    CHECK(rig.hli().axis_position_r[3] == 900000);
+    CHECK(rig.hli().insert_cmd.state_r.position_at_next_stop[0] == 900000);
+    CHECK(rig.within_limits());
+  }
+}

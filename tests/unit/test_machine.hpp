@@ -10,4 +10,9 @@ inline MachineConfig xyz_machine() {
   return parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyz_machine.yaml"));
 }
 
+// X Y Z and a modulo rotary table C (KRN-7): config/xyzc_machine.yaml.
+inline MachineConfig xyzc_machine() {
+  return parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyzc_machine.yaml"));
+}
+
 }  // namespace hil::test
