@@ -8,21 +8,6 @@
 #include "velocity_profile.hpp"
 
 namespace hil::cnc {
-namespace {
-
-// A part shorter than this is not split off or moved (10 nm): a shorter arc
-// could not be told from a full circle.
-constexpr double shortest_rest_mm = 1e-5;
-
-// Numbers the planner can work with: a finite length and finite limits.
-bool finite(const PathSegment& segment) {
-  const Limits& lim = segment.limits();
-  return std::isfinite(segment.length()) && std::isfinite(lim.v) && std::isfinite(lim.a) && !std::isnan(lim.j) &&
-         std::isfinite(segment.covered_distance());
-}
-
-}  // namespace
-
 PathInterpolator::PathInterpolator(const MachineConfig& machine, PathObserver& observer)
     : machine_(machine), observer_(observer), look_ahead_(machine), setpoints_(machine.axes.size()) {}
 
@@ -34,7 +19,7 @@ std::vector<double> PathInterpolator::setpoint_positions() const {
 
 void PathInterpolator::set_velocity_factor(double factor) {
   look_ahead_.set_velocity_factor(factor);
-  replan_ = true;
+  factor_changed_ = true;
 }
 
 StopPoint PathInterpolator::leave_front(double t) {
@@ -67,14 +52,14 @@ bool PathInterpolator::push_short_cut(size_t target, const Motion& cut) {
   PathSegment segment(cut, machine_);
   if (!(segment.length() > 0)) return false;
   // Not smoothed, nor the transition after it (DDTG-2).
-  push({target, cut, 0.0, segment.covered_distance(), blocks_[target].slope, std::nullopt});
+  push({target, cut, 0.0, segment.covered_distance(), blocks_[target].slope, std::nullopt, std::nullopt, false});
   return true;
 }
 
 void PathInterpolator::go_on_from_standstill(double t) {
   refill();
   if (!look_ahead_.empty()) begin_front({}, t);
-  replan_ = false;
+  replan_ = factor_changed_ = false;
 }
 
 bool PathInterpolator::turn(double t, size_t stored_blocks) {
@@ -122,253 +107,6 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   return true;
 }
 
-void PathInterpolator::refill() {
-  if (direction_ == TravelDirection::backward) refill_backward();
-  else refill_forward();
-  const bool exhausted = direction_ == TravelDirection::backward
-                             ? cursors_.next_backward <= cursors_.lowest_stored
-                             : cursors_.next_to_look_ahead >= blocks_.size() || cursors_.next_to_look_ahead == invalid_block_;
-  if (exhausted) place_stop_at_end();
-}
-
-PathInterpolator::PushedMotion PathInterpolator::whole_block(size_t k) const {
-  const Block& block = blocks_[k];
-  const double programmed = PathSegment(block.motion, machine_).covered_distance();
-  if (direction_ == TravelDirection::backward)
-    return {k, reversed(block.motion), programmed, programmed, block.slope, corner_out(k)};
-  return {k, block.motion, 0.0, programmed, block.slope, corner_out(k)};
-}
-
-PathInterpolator::PushedMotion PathInterpolator::rest_of_block(size_t k, const Motion& rest) const {
-  const double covered = PathSegment(rest, machine_).covered_distance();
-  const double end = direction_ == TravelDirection::backward ? 0.0 : PathSegment(blocks_[k].motion, machine_).covered_distance();
-  return {k, rest, end - direction_sign() * covered, covered, blocks_[k].slope, corner_out(k)};
-}
-
-Corner PathInterpolator::corner_out(size_t k) const {
-  return direction_ == TravelDirection::backward ? corner_below(k) : corner_after(blocks_[k]);
-}
-
-void PathInterpolator::push(PushedMotion m, bool stop_before) {
-  if (pushed_.empty()) pushed_covered_ = covered_before_front_;
-  const PathSegment segment(m.motion, machine_);
-  const double length = segment.length();
-  if (stop_covered_ && std::isfinite(length)) {
-    const double to_stop = *stop_covered_ - pushed_covered_;
-    const double s = m.covered > 0 ? length * to_stop / m.covered : 0.0;
-    // The part before the stop ends as programmed (a corner there is not
-    // contoured): the path stands on the mark.
-    const std::optional<Corner> ends_at_stop = m.out ? std::optional<Corner>(Corner{}) : std::nullopt;
-    if (s <= shortest_rest_mm) {  // at its start
-      look_ahead_.flush();
-      place_stop(segment.position(0));
-      stop_before = true;
-    } else if (s < length - shortest_rest_mm) {
-      // ISC-3: the block is split where the stop lies; the look-ahead brakes
-      // to v = 0 at the split as before an M function, and the path enters
-      // the second part from standstill.
-      const std::vector<double> point = segment.position(s);
-      const double covered_first = m.covered * s / length;
-      PushedMotion first = m, second = m;
-      first.motion = motion_until(m.motion, point);
-      first.covered = covered_first;
-      first.out = ends_at_stop;
-      second.motion = motion_from(m.motion, point);
-      second.origin = m.origin + direction_sign() * covered_first;
-      second.covered = m.covered - covered_first;
-      hand_over(std::move(first), stop_before);
-      place_stop(point);
-      hand_over(std::move(second), true);
-      return;
-    } else if (s <= length + shortest_rest_mm) {  // at its end
-      const std::vector<double> end = m.motion.end;
-      m.out = ends_at_stop;
-      hand_over(std::move(m), stop_before);
-      place_stop(end);
-      return;
-    }
-  }
-  hand_over(std::move(m), stop_before);
-}
-
-void PathInterpolator::hand_over(PushedMotion m, bool stop_before) {
-  pushed_covered_ += m.covered;
-  if (m.out) {
-    look_ahead_.push(m.block, m.motion, m.slope, stop_before, *m.out, m.covered);
-  } else {
-    PathSegment segment(m.motion, machine_);
-    segment.set_covered_distance(m.covered);
-    look_ahead_.push(m.block, std::move(segment), m.slope, stop_before);
-  }
-  pushed_.push_back(std::move(m));
-}
-
-// KRN-6: the path runs on along the curve it stands on, either way, with
-// each half counting for its own block (DPS-1), and joins the programmed
-// motion where the curve does, tangent and curvature continuous.
-size_t PathInterpolator::push_along_curve(const StopPoint& stop, bool towards_end) {
-  const ContourJoint& j = *stop.curve;
-  if (pushed_.empty()) pushed_covered_ = covered_before_front_;
-  // [from, to] of the curve, run towards its end or its start.
-  const auto hand_over_part = [&](const ContourJoint::Half& half, double from, double to, bool stop_before) {
-    PathSegment piece(stop.curve, from, to, !towards_end, machine_);
-    const Block& block = blocks_[half.block];
-    // For path_ahead() (ISC-4), within PATH_DEV of the curve.
-    Motion chord = block.motion;
-    if (chord.type != MotionType::rapid) chord.type = MotionType::linear;
-    chord.start = piece.position(0);
-    chord.end = piece.end();
-    pushed_covered_ += piece.covered_distance();
-    pushed_.push_back({half.block, chord, 0.0, piece.covered_distance(), block.slope, std::nullopt});
-    look_ahead_.push(half.block, std::move(piece), block.slope, stop_before);
-  };
-  const auto part = [&](const ContourJoint::Half& half, double from, double to) {
-    if (!(to - from > shortest_rest_mm)) {
-      // Too short to tell apart from the curve (10 nm): a straight line, so
-      // that the path goes on from where it stands.
-      if (!(to - from > 1e-9)) return;
-      Motion line = blocks_[half.block].motion;
-      if (line.type != MotionType::rapid) line.type = MotionType::linear;
-      line.start = j.curve->position(towards_end ? from : to);
-      line.end = j.curve->position(towards_end ? to : from);
-      push({half.block, line, 0.0, j.covered(from, to), blocks_[half.block].slope, std::nullopt});
-      return;
-    }
-    const double covered = j.covered(from, to);
-    const double to_stop = stop_covered_ ? *stop_covered_ - pushed_covered_ : covered;
-    if (to_stop < covered - shortest_rest_mm) {
-      if (to_stop <= shortest_rest_mm) {  // at its start
-        look_ahead_.flush();
-        place_stop(j.curve->position(towards_end ? from : to));
-        hand_over_part(half, from, to, true);
-        return;
-      }
-      // ISC-3: split where the stop lies (each half covers in proportion).
-      const double at = towards_end ? from + (to - from) * to_stop / covered : to - (to - from) * to_stop / covered;
-      hand_over_part(half, towards_end ? from : at, towards_end ? at : to, false);
-      place_stop(j.curve->position(at));
-      hand_over_part(half, towards_end ? at : from, towards_end ? to : at, true);
-      return;
-    }
-    hand_over_part(half, from, to, false);
-  };
-  const double x = stop.curve_s, split = j.split, length = j.curve->length();
-  if (towards_end) {
-    part(j.before, x, split);
-    part(j.after, std::max(x, split), length);
-  } else {
-    part(j.after, split, x);
-    part(j.before, 0, std::min(x, split));
-  }
-  const ContourJoint::Half& last = towards_end ? j.after : j.before;
-  const std::vector<double> joint_point = j.curve->position(towards_end ? length : 0.0);
-  const bool backward = direction_ == TravelDirection::backward;
-  if (const auto rest = rest_of_motion(blocks_[last.block].motion, joint_point, backward, machine_))
-    push(rest_of_block(last.block, *rest));
-  return last.block;
-}
-
-void PathInterpolator::place_stop(std::vector<double> position) {
-  stop_at_ = travelled_before_front_ + look_ahead_.path_length();
-  placed_stop_ = PlacedStop{std::move(position), pushed_covered_ - stop_covered_from_};
-  stop_covered_.reset();
-  replan_ = true;
-}
-
-void PathInterpolator::place_stop_at_end() {
-  if (!stop_covered_) return;
-  if (pushed_.empty()) {
-    pushed_covered_ = covered_before_front_;
-    place_stop(setpoint_positions());
-  } else {
-    place_stop(pushed_.back().motion.end);
-  }
-}
-
-void PathInterpolator::restart_here(double t) {
-  const size_t k = look_ahead_.front().block_index;
-  // The front motion and the parts of the same block after it (a split).
-  std::vector<PushedMotion> parts;
-  for (const PushedMotion& m : pushed_) {
-    if (m.block != k) break;
-    parts.push_back(m);
-  }
-  const StopPoint stop = leave_front(t);
-  const PushedMotion& front = parts.front();
-  const double left = front.covered - direction_sign() * (stop.programmed_place - front.origin);
-  if (stop.curve) {
-    const size_t on = push_along_curve(stop, !stop.curve_reversed);  // with the rest of its block
-    if (direction_ == TravelDirection::backward) cursors_.next_backward = on;
-    else cursors_.next_to_look_ahead = on + 1;
-    refill();
-    return;
-  }
-  // What is left of the front, from where the path stands: also a rest too
-  // short for its own geometry (a straight line: a 4.6 nm rest dropped made
-  // the path jump, fuzz seed 228); on a full circle by what it has covered.
-  if (const auto rest = rest_of_motion(front.motion, stop.position, false, machine_, left < front.covered / 2)) {
-    PushedMotion r = front;
-    r.motion = *rest;
-    r.origin = stop.programmed_place;
-    r.covered = std::max(left, 0.0);
-    push(std::move(r));
-  } else if (parts.size() == 1) {
-    // Nothing is left of block k: it is finished, as finish_front() would
-    // have it (the cursors say where the path stands, KRN-5).
-    observer_.finish_block(k);
-    if (direction_ == TravelDirection::forward) cursors_.next_to_run = std::max(cursors_.next_to_run, k + 1);
-    cursors_.last_finished = k;
-  }
-  for (size_t i = 1; i < parts.size(); ++i) push(parts[i]);
-  if (direction_ == TravelDirection::backward) cursors_.next_backward = k;
-  else cursors_.next_to_look_ahead = k + 1;
-  refill();
-}
-
-void PathInterpolator::refill_forward() {
-  size_t& next = cursors_.next_to_look_ahead;
-  for (; !look_ahead_.full() && next < blocks_.size() && next != invalid_block_; ++next) {
-    const Block& block = blocks_[next];
-    if (!block.has_motion) continue;
-    // M functions, a dwell or a channel initialisation on its line or since
-    // the last motion block: the path stands still where it starts.
-    bool stop_before = false;
-    for (size_t i = next + 1; i-- > 0;) {
-      if (i < next && blocks_[i].has_motion) break;
-      stop_before = stop_before || blocks_[i].stops_path();
-    }
-    if (next < cursors_.begun) stop_before = false;  // forward again after backward motion: ran already
-    PathSegment segment(block.motion, machine_);
-    if (!finite(segment)) {
-      invalid_block_ = next;
-      look_ahead_.flush();
-      return;
-    }
-    push(whole_block(next), stop_before);
-  }
-  if (next >= blocks_.size()) look_ahead_.flush();
-}
-
-void PathInterpolator::refill_backward() {
-  while (!look_ahead_.full() && cursors_.next_backward > cursors_.lowest_stored) {
-    const size_t i = --cursors_.next_backward;
-    if (!blocks_[i].has_motion) continue;
-    push(whole_block(i));
-  }
-  if (cursors_.next_backward <= cursors_.lowest_stored) look_ahead_.flush();
-}
-
-// Backward (KRN-5, KRN-6): the path leaves block i into the motion block
-// below it through the corner at that block's end, contoured as forward
-// unless something between stops the path there.
-Corner PathInterpolator::corner_below(size_t i) const {
-  for (size_t k = i; k-- > cursors_.lowest_stored;) {
-    if (blocks_[k + 1].stops_path()) return {};
-    if (blocks_[k].has_motion) return corner_after(blocks_[k]);
-  }
-  return {};
-}
-
 void PathInterpolator::begin_front(const MotionState& state, double t0) {
   const size_t index = look_ahead_.front().block_index;
   run_blocks_without_motion(index);
@@ -405,7 +143,8 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
       }
     }
     plan_ = block_profile(state, length, v_end, st.lim, st.slope);
-    if (plan_.end().v <= v_end + 1e-9 * (1 + v_end)) break;
+    plan_meets_end_ = plan_.end().v <= v_end + 1e-9 * (1 + v_end);
+    if (plan_meets_end_) break;
     Stretch longer = look_ahead_.stretch(state.v, through);
     if (longer.length <= st.length) break;  // nothing to run through
     st = longer;
@@ -498,8 +237,22 @@ void PathInterpolator::run_blocks_without_motion(size_t up_to) {
 }
 
 PathProgress PathInterpolator::interpolate(double t) {
-  if (!look_ahead_.empty() && replan_) plan(path_state_at(t), t);
-  replan_ = false;
+  if (!look_ahead_.empty() && (replan_ || factor_changed_)) {
+    const MotionProfile before = plan_;
+    const double before_start = plan_start_cycles_;
+    const bool before_met = plan_meets_end_;
+    plan(path_state_at(t), t);
+    // An override change while the path brakes for a limiting transition
+    // can leave no plan that meets it (a curvature step's jerk share: fuzz
+    // seed 2089732 reached the start of the stored contour at 4.8 mm/s,
+    // 2,700 mm/s^2); the plan made before still does: it stays.
+    if (!replan_ && !plan_meets_end_ && before_met) {
+      plan_ = before;
+      plan_start_cycles_ = before_start;
+      plan_meets_end_ = true;
+    }
+  }
+  replan_ = factor_changed_ = false;
   MotionState path = path_state_at(t);
   bool reached_contour_start = false;
   // Pass every block the path has left by t; a plan that ends short of the

@@ -152,17 +152,30 @@ class PathInterpolator {
   PathProgress interpolate(double t);
 
  private:
+  // A part shorter than this is not split off or moved (10 nm): a shorter
+  // arc could not be told from a full circle.
+  static constexpr double shortest_rest_mm = 1e-5;
+
+  // What enters the look-ahead: look_ahead_filling.cpp.
   void refill();
   // One motion handed to the look-ahead: a block, a part of one split at a
   // stop mark, the rest of one after a turn, a connector, a short cut. The
   // look-ahead makes pieces of it (KRN-6); its last piece ends_block.
+  // [from, to] of a contouring curve, run from `to` to `from` if reversed.
+  struct CurvePart {
+    std::shared_ptr<const ContourJoint> joint;
+    double from = 0, to = 0;
+    bool reversed = false;
+  };
   struct PushedMotion {
     size_t block = 0;
-    Motion motion;        // in the travel direction
+    Motion motion;        // in the travel direction (of a curve part: its chord, for path_ahead)
     double origin = 0;    // where it begins in the block's programmed distance (StopPoint::programmed_place)
     double covered = 0;   // what it adds to dist_prog_start (DPS-1)
     SlopeType slope = SlopeType::trapez;
     std::optional<Corner> out;  // how the path leaves it; none: taken as it is (DDTG-2)
+    std::optional<CurvePart> curve;  // a part of a curve (after a turn or a restart on it)
+    bool whole_block = false;        // as refill() pushes it: refill() can push it again
   };
   PushedMotion whole_block(size_t k) const;
   // The rest of block k from the stop the way the path now travels.
@@ -177,6 +190,8 @@ class PathInterpolator {
   // end (`towards_end`) or its start, then the motion of the block there;
   // the block whose motion it is.
   size_t push_along_curve(const StopPoint& stop, bool towards_end);
+  // A part of a curve for `block` (split at a stop mark as push() does).
+  void push_curve_part(size_t block, const CurvePart& part);
   void place_stop(std::vector<double> position);
   // Nothing more comes into the look-ahead this way: a stop not placed yet lands at its end.
   void place_stop_at_end();
@@ -211,7 +226,9 @@ class PathInterpolator {
   LookAhead look_ahead_;
   MotionProfile plan_;    // of the stretch from the front block on; p = 0 at its start
   double plan_start_cycles_ = 0;  // after program start; a plan may start between two cycles
-  bool replan_ = false;    // the velocity factor changed
+  bool replan_ = false;          // a stop was placed or released: plan again
+  bool factor_changed_ = false;  // the velocity factor changed: plan again
+  bool plan_meets_end_ = true;   // the plan ends at its stretch's end velocity
   // Path length travelled (either direction) before the front segment, and
   // where a stop is asked for on the same scale.
   double travelled_before_front_ = 0;

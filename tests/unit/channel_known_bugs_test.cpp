@@ -22,6 +22,17 @@ using namespace hil::cnc;
 
 namespace {
 
+// A minimized fuzz program with its seed's PLC, as it ran (no insert stop
+// commands): every failure is reported.
+void check_minimized(uint64_t seed, const std::string& program, int64_t chaos_cycles) {
+  fuzz::FuzzOptions options;
+  options.program_text = program;
+  options.chaos_cycles = chaos_cycles;
+  options.insert_stops = false;
+  const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(seed, options);
+  for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+}
+
 // Runs `scenario` in a child: "" if it returned true, else what went wrong.
 std::string in_child(const std::function<std::string()>& scenario) {
   int fds[2];
@@ -253,14 +264,7 @@ TEST_CASE("DDTG-6 DDTG-10 KRN-5 KRN-3 the channel fuzz seeds that jumped off a s
        "%fuzz17350403057812634127\nN20 G90 G01 F1465\nN30 G00 X75.418372562 Y-27.588537174\nN40 G01 X89.353410616 Y-23.067783429\n"
        "N50 G01 X89.333104516 Y-23.073909337 M20\nN260 M30\n"},
   };
-  for (const Case& c : cases) {
-    fuzz::FuzzOptions options;
-    options.program_text = c.program;
-    options.chaos_cycles = c.chaos_cycles;
-    options.insert_stops = false;  // as they ran
-    const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(c.seed, options);
-    for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
-  }
+  for (const Case& c : cases) check_minimized(c.seed, c.program, c.chaos_cycles);
 }
 
 TEST_CASE("KRN-3 24 minutes into a run the path keeps the jerk limit: its time is counted in cycles", "[channel]") {
@@ -309,39 +313,31 @@ TEST_CASE("KRN-3 an override change that makes a feed change limiting while the 
   // ended there demanding a = 0 and 18.96 mm/s, which the path (64.7 mm/s,
   // 1.77 mm before) could not meet: it reached the program end at 50 mm/s
   // (16,722 mm/s^2). The plan now runs through such a transition.
-  fuzz::FuzzOptions options;
-  options.program_text =
+  check_minimized(2087828,
       "%fuzz14128741101328428511\nN50 G01 X-16.2 Y8.1 Z-16.2 F12673\nN120 G01 X-55.8 Y27.9 Z-55.8\n"
       "N130 G01 X-25.2 Y12.6 Z-25.2\nN150 G01 X-24.892676763 Y12 F13639\nN190 G01 X-23.692676763 Y9.6\n"
       "N200 G01 X-23.992676763 Y10.2\nN260 G01 Y12.78\nN270 G01 Y9.684 Z-25.2\n"
       "N280 G01 X-23.399288143 Y10.082899011 Z-25.2\nN370 G01 X-20.879288143 Y12.602899011 Z-22.68\n"
       "N380 G01 X-23.399288143 Y10.082899011 Z-25.2\nN390 G01 X-23.619288143 Y9.862899011 Z-25.42 F14071\n"
-      "N1420 M30\n";
-  options.chaos_cycles = 18428;
-  options.insert_stops = false;
-  const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(2087828, options);
-  for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+      "N1420 M30\n",
+                  18428);
 }
 
-TEST_CASE("KRN-3 known bug: override changes while braking through a curvature step for a corner pass the corner",
-          "[.][known-bug]") {
-  // E, cnc/path/look_ahead (the curvature-step part; feed changes are
-  // fixed, test above): the override toggled between 100 and 120 %
+TEST_CASE("KRN-3 override changes while braking through a curvature step for a corner keep the limits",
+          "[channel]") {
+  // E, its curvature-step part: the override toggled between 100 and 120 %
   // while the path braked along the arc N70 into the 0.029 mm line N80 for
   // the exact-stop corner N80/N90; the curvature step turned limiting
   // (a = 0 required there), which the braking path could not keep, and it
   // reached the corner at 2.6 mm/s: 1.5e6 mm/s^3 on X (fuzz seed 2042447,
-  // minimized; seed 1001167 alike).
-  fuzz::FuzzOptions options;
-  options.program_text =
+  // minimized; seed 1001167 alike). Passes since the curvature-step rule
+  // with the exact jerk budget (KRN-6 branch, docs/CONTOURING.md).
+  check_minimized(2042447,
       "%fuzz8188478744651035126\nN20 G90 G01 F1358\nN30 G03 Z0 I-1.477830829 J-1.879095967\n"
       "N40 G02 X0.186297093 Y0.123895533 I-0.027777773 J0.243780164\nN50 G01 X4.434297093 F294\n"
       "N60 G03 X4.837297093 Y0.526895533 I0 J0.403\nN70 G03 X-3.366702907 I-4.102 J0\nN80 G01 Y0.497895533\n"
-      "N90 G01 X-3.061702907 Y0.497895533\nN100 G03 X-0.853702907 Y2.705895533 I0 J2.208\nN790 M30\n";
-  options.chaos_cycles = 249539;
-  options.insert_stops = false;
-  const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(2042447, options);
-  for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+      "N90 G01 X-3.061702907 Y0.497895533\nN100 G03 X-0.853702907 Y2.705895533 I0 J2.208\nN790 M30\n",
+                  249539);
 }
 
 TEST_CASE("ISC-3 KRN-3 KRN-6 an insert stop on a stretch's end but for round-off: the plan ends at rest there",
@@ -349,12 +345,31 @@ TEST_CASE("ISC-3 KRN-3 KRN-6 an insert stop on a stretch's end but for round-off
   // Contour fuzz seed 870: a stop placed at a piece's end came out 1e-16
   // beyond the stretch the plan ran to, so the plan kept v_end = 6.7 mm/s
   // there while interpolate() held the path on the stop: 6,468 mm/s^2 on Y.
-  // Seed 764: a restart 4.6 nm before a block end (as H above).
+  // Seed 764: a restart 4.6 nm before a block end (as H above). Seed 1084:
+  // a restart on the 3 nm line that ended a curve's first half (a turn had
+  // left it) dropped the curve's second half and the block's rest after
+  // it: 25 nm jump, 44,246 mm/s^3. Seed 1016: 40,002 mm/s^3 after a restart
+  // in backward motion.
   hil::fuzz::FuzzOptions options;
   options.kind = hil::fuzz::ProgramKind::contour;
-  for (uint64_t seed : {764u, 870u}) {
+  for (uint64_t seed : {764u, 870u, 1016u, 1084u}) {
     INFO("seed " << seed);
     const hil::fuzz::FuzzRun run = hil::fuzz::run_channel_fuzz_isolated(seed, options);
     for (const hil::fuzz::Failure& f : run.failures) FAIL_CHECK(hil::fuzz::describe(run, f));
   }
+}
+
+TEST_CASE("KRN-3 KRN-5 an override change that leaves no plan meeting the stretch's end keeps the plan made before",
+          "[channel]") {
+  // E, fuzz seed 2089732 minimized: backward motion along the arc N40 into
+  // the 0.126 mm line N30 braking for the start of the stored contour; the
+  // override dropped from 103 % to 76.3 % there, and the new plan, with the
+  // line's jerk share next to the curvature step, could not stop in the
+  // 0.079 mm left: the path reached the contour's start at 4.8 mm/s
+  // (2,700 mm/s^2). The plan made before the change still stopped there.
+  check_minimized(2089732,
+      "%fuzz6381460583406821096\nN20 G90 G01 F3237\nN30 G01 X-0.126\nN40 G03 X-24.144 Y-24.018 I0 J-24.018\n"
+      "N80 G01 X9.481617045 Y-10.501649429\nN90 G03 X9.482113558 Y-10.498373933 I-0.00109595 J0.001841508\n"
+      "N480 M30\n",
+                  23506);
 }
