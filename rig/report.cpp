@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <sstream>
+#include <string>
 
 namespace hil::rig {
 namespace {
@@ -28,23 +29,25 @@ std::string format_check(const logger::RunLog& log, const logger::CheckReport& r
     char head[160];
     std::snprintf(head, sizeof head, "axis %-37s %12s %12s %10s\n", a.axis.c_str(), "max", "limit", "margin");
     out << head;
-    auto row = [&](const char* quantity, double value, double limit) {
+    // A, B, C are rotary axes (DIN 66025, KRN-7): degrees.
+    const std::string u = a.axis.find_first_of("ABC") == 0 ? "deg" : "mm";
+    auto row = [&](const std::string& quantity, double value, double limit) {
       char buf[160];
       // Round-off above a limit (within the check's tolerance) shows as 0.0 %.
       double margin = limit > 0 ? 100 * (limit - value) / limit : 0;
       if (margin < 0 && margin > -0.05) margin = 0;
       if (limit > 0)
-        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12.4f %8.1f %%\n", quantity, value, limit, margin);
+        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12.4f %8.1f %%\n", quantity.c_str(), value, limit, margin);
       else
-        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12s %10s\n", quantity, value, "-", "-");
+        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12s %10s\n", quantity.c_str(), value, "-", "-");
       out << buf;
     };
-    row("commanded |v| [mm/s] / v_max", a.cmd_v, a.v_max);
-    row("commanded |a| [mm/s^2] / a_max", a.cmd_a, a.a_max);
-    row("commanded |j| [mm/s^3] / j_max", a.cmd_j, a.j_max);
-    row("actual |v| [mm/s] / P-AXIS-00440", a.act_v, a.v_err_limit);
-    row("actual |a| [mm/s^2] / P-AXIS-00442", a.act_a, a.a_err_limit);
-    row("|following error| [mm] / P-AXIS-00168", a.following_error, a.slep_max);
+    row("commanded |v| [" + u + "/s] / v_max", a.cmd_v, a.v_max);
+    row("commanded |a| [" + u + "/s^2] / a_max", a.cmd_a, a.a_max);
+    row("commanded |j| [" + u + "/s^3] / j_max", a.cmd_j, a.j_max);
+    row("actual |v| [" + u + "/s] / P-AXIS-00440", a.act_v, a.v_err_limit);
+    row("actual |a| [" + u + "/s^2] / P-AXIS-00442", a.act_a, a.a_err_limit);
+    row("|following error| [" + u + "] / P-AXIS-00168", a.following_error, a.slep_max);
   }
   int64_t violating_cycles = 0;
   for (const auto& v : report.violations) violating_cycles += v.cycles;
