@@ -86,9 +86,6 @@ Result run(const MachineConfig& machine, const std::string& program, const std::
     }
     if (channel.hli().block_count_r >= first_line) seg = best_seg;
     if (polyline.size() > 1 && channel.hli().block_count_r >= first_line) {
-      if (best > r.max_deviation && std::getenv("HIL_DEBUG_DEV"))
-        std::fprintf(stderr, "k %lld dev %.6f seg %zu p %.6f %.6f line %lld\n", static_cast<long long>(k), best, seg, p.x,
-                     p.y, static_cast<long long>(channel.hli().block_count_r));
       r.max_deviation = std::max(r.max_deviation, best);
       if (first_contour < 0) first_contour = k;
     }
