@@ -158,15 +158,15 @@ class PathInterpolator {
 
   // What enters the look-ahead: look_ahead_filling.cpp.
   void refill();
-  // One motion handed to the look-ahead: a block, a part of one split at a
-  // stop mark, the rest of one after a turn, a connector, a short cut. The
-  // look-ahead makes pieces of it (KRN-6); its last piece ends_block.
   // [from, to] of a contouring curve, run from `to` to `from` if reversed.
   struct CurvePart {
     std::shared_ptr<const ContourJoint> joint;
     double from = 0, to = 0;
     bool reversed = false;
   };
+  // One motion handed to the look-ahead: a block, a part of one split at a
+  // stop mark, the rest of one (or of a curve) after a turn, a short cut. The
+  // look-ahead makes pieces of it (KRN-6); its last piece ends_block.
   struct PushedMotion {
     size_t block = 0;
     Motion motion;        // in the travel direction (of a curve part: its chord, for path_ahead)

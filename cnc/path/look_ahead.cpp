@@ -23,10 +23,10 @@ double highest_entry_velocity(double v_exit, double distance, double v_cap, cons
 LookAhead::LookAhead(const MachineConfig& machine, size_t capacity)
     : machine_(machine), builder_(machine), capacity_(capacity) {}
 
-void LookAhead::push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before, bool ends_block) {
+void LookAhead::push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before) {
   flush();
-  if (ends_block) ++programmed_;
-  push_piece({block_index, std::move(segment), slope, stop_before, true, ends_block});
+  ++programmed_;
+  push_piece({block_index, std::move(segment), slope, stop_before, true, true});
 }
 
 void LookAhead::push(size_t block_index, const Motion& motion, SlopeType slope, bool stop_before, const Corner& out,

@@ -62,11 +62,9 @@ class LookAhead {
 
   // stop_before: the path must stand still where the block starts (an M
   // function synchronised before its motion, a dwell). Taken as it is:
-  // not contoured (the DDTG short cut, DDTG-2; the planner's tests).
-  // ends_block = false: more of the same block follows (a connector after a
-  // turn inside a contouring curve).
-  void push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before = false,
-            bool ends_block = true);
+  // not contoured (the DDTG short cut, DDTG-2; a part of a contouring
+  // curve after a turn; the planner's tests).
+  void push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before = false);
   // A programmed block, and how the path is to leave it into the next one
   // pushed (KRN-6: contoured with G261/G61).
   // `covered`: the block's distance from program start, if not its own
