@@ -63,6 +63,12 @@ struct AxisConfig {
   double velocity_error_limit() const { return v_max * dyn_monitoring_v_err / 1000.0; }
 };
 
+// The lift function's method (TF5200_lift_function.txt, 4.2.1): none in
+// the basic setting; Lifting (path-based) with FCT_LIFT_UP in P-STUP-00060;
+// Advanced Lifting (time-based) with FCT_LIFT_UP_TIME in P-STUP-00060 and
+// P-STUP-00070 and P-CHAN-00345 enable_time_based_lift = 1.
+enum class LiftMethod { none, path_based, time_based };
+
 struct MachineConfig {
   std::string name;
   int32_t cycle_time_us = 1000;
@@ -75,6 +81,13 @@ struct MachineConfig {
   // file gives 0.1 um) along the path before its block. The NC program can
   // change it: V.G.M_FCT[i].PRE_OUTP_PATH = <mm>.
   std::map<int, double> m_pre_output_mm;
+  // P-STUP-00060 path_preparation.function, P-STUP-00070
+  // interpolator.function (identifiers joined by |), P-CHAN-00345: resolved
+  // to the lift method at load, contradictions refused there.
+  LiftMethod lift_method = LiftMethod::none;
+  // P-CHAN-00244 lift_min_dist (the file gives 0.1 um): a lift range whose
+  // path is shorter suppresses the lift (LIFT-4). 0: never.
+  double lift_min_dist_mm = 0;
   std::vector<AxisConfig> axes;
 
   double cycle_time_s() const { return cycle_time_us * 1e-6; }

@@ -2,6 +2,7 @@
 // What the decoder hands on: one entry per NC program line that commands
 // something (KRN-1). Positions are absolute, in machine axis order, mm.
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -18,6 +19,13 @@ struct Motion {
   double center_x = 0;        // mm, absolute arc centre (G02/G03, XY plane)
   double center_y = 0;
   double feed = 0;            // mm/s (programmed F is mm/min), the F in force; G00 moves at rapid
+  // The lift function's caps on the path in a lift range (LIFT-2, LIFT-3):
+  // velocity so that the lift axis makes its target in time, and (path-based)
+  // acceleration and jerk so that the coupled lift axis stays within its
+  // overload range. Infinite: none.
+  double path_v_cap = std::numeric_limits<double>::infinity();
+  double path_a_cap = std::numeric_limits<double>::infinity();
+  double path_j_cap = std::numeric_limits<double>::infinity();
 };
 
 // #DISTANCE PROG START ON / OFF (modal) / CLEAR (DPS-2).
@@ -67,6 +75,16 @@ struct InsertCmdLine {
   std::optional<InsertCommand> command;
 };
 
+// <axis>[LIFT_START ..] or the single-block <axis>[LIFT ..] (LIFT-1): a lift
+// range begins with this block (its motion, if it has one, lies in it).
+// Positions absolute, G91 resolved against where the lift axis stands.
+struct LiftStart {
+  int axis = 0;          // machine axis index of the lift axis
+  bool down = false;     // DOWN: lowering instead of lifting (Advanced Lifting only)
+  double pos = 0;        // mm, where the lift axis lands at the range's end (POS; default: where it stands)
+  double pos_limit = 0;  // mm, the highest lift (DOWN: the deepest lowering), POS_LIMIT
+};
+
 struct Block {
   int64_t nc_line = 0;   // 1-based line of the NC program
   // Lines the decoder has read up to this one, repeated lines ($FOR)
@@ -94,6 +112,12 @@ struct Block {
   ContourMode contour;
   std::optional<int> programmed_stop;  // M00 (0) or M01 (1), ISC-5
   std::optional<InsertCmdLine> insert_cmd;
+  // The lift function (LIFT-1, LIFT-5): a range begins with this block, and
+  // it ends after this block's motion (Z[LIFT_END], the single-block
+  // Z[LIFT ..], #FLUSH / #FLUSH WAIT which also begins the next one, M30).
+  // A range without an end ends with the program's last block.
+  std::optional<LiftStart> lift_start;
+  bool lift_end = false;
 
   // The path stands still where this block is reached: for the PLC's
   // acknowledgement, a dwell, or a channel initialisation.
