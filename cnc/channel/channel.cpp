@@ -10,7 +10,8 @@ namespace hil::cnc {
 
 Channel::Channel(MachineConfig machine, std::string nc_program)
     : machine_(std::move(machine)), nc_program_(std::move(nc_program)), path_(machine_, *this),
-      feed_(machine_.override_max_percent), ddtg_(machine_), backward_(machine_), insert_(machine_) {
+      feed_(machine_.override_max_percent), ddtg_(machine_), backward_(machine_), insert_(machine_),
+      lift_(machine_), setpoints_(path_.setpoints()) {
   for (const AxisConfig& axis : machine_.axes) hli_.axis_name.push_back(axis.name);
   hli_.axis_position_r.assign(machine_.axes.size(), 0);
   hli_.stop_conditions_r = stop_condition::ipo_input_empty;
@@ -63,7 +64,10 @@ void Channel::start_program() {
     events_.raise(*program.error);  // reported at once; the blocks before it still run
   }
   std::vector<Event> warnings;
-  path_.load(apply_m_pre_output(std::move(program.blocks), machine_, warnings));
+  std::vector<Block> blocks = apply_m_pre_output(std::move(program.blocks), machine_, warnings);
+  lift_.prepare(blocks, path_.setpoint_positions());
+  path_.load(std::move(blocks));
+  backward_refused_ = false;
   for (Event& warning : warnings) events_.raise(std::move(warning));
   start_cycle_ = cycle_;
   hli_.channel_state = ChannelState::active;
@@ -117,6 +121,14 @@ void Channel::leave_insert_mark(double t) {
 
 void Channel::interpolate(double t) {
   const PathProgress progress = path_.interpolate(t);
+  if (progress == PathProgress::all_blocks_run || progress == PathProgress::invalid_block) lift_.all_blocks_run();
+  setpoints_ = path_.setpoints();
+  if (lift_.update(path_, hli_.override.state_r, setpoints_)) update_hold();
+  if (lift_.take_missed_landing()) {
+    events_.raise(events_.at_block(Severity::error, "lift function: the path left the lift range before the lift "
+                                                    "axis had landed on POS"));
+    hli_.channel_state = ChannelState::error;
+  }
   hli_.dist_prog_start = distance_.value_mm(path_.front_covered()) * hli_units_per_mm;
   hli_.path_velocity = path_.path_velocity();
   if (progress == PathProgress::invalid_block) {
@@ -149,6 +161,7 @@ void Channel::interpolate(double t) {
 }
 
 void Channel::start_short_cut(double t) {
+  lift_.land_now();  // in a lift range: the lift axis lands first, the path waits
   insert_.before_short_cut(path_, t, distance_mm());
   const DeleteDistanceToGo::Outcome outcome = ddtg_.start_short_cut(path_, t, events_);
   update_hold();
@@ -161,6 +174,14 @@ void Channel::start_short_cut(double t) {
 
 void Channel::change_direction(double t, bool standing) {
   if (!backward_.turn_due(path_.direction(), standing, ddtg_.on_short_cut(), ddtg_.pending(), events_)) return;
+  if (path_.direction() == TravelDirection::forward && !path_.empty() &&
+      lift_.forbids_backward(static_cast<size_t>(&path_.front_block() - path_.blocks().data()))) {
+    if (!backward_refused_)
+      events_.raise(events_.at_block(Severity::warning, "backward motion is not available at or after a lift range "
+                                                        "(LIFT-1): the path stands until backward motion is withdrawn"));
+    backward_refused_ = true;
+    return;
+  }
   insert_.before_turn(path_, t, distance_mm());  // ISC-9
   if (!path_.turn(t, backward_.stored_blocks())) return;
   update_hold();
@@ -170,11 +191,17 @@ void Channel::change_direction(double t, bool standing) {
 }
 
 void Channel::drive_error(const std::string& axis, const std::string& what) {
-  if (error_stop_.begin(axis, what, hli_.channel_state, events_)) update_hold();
+  if (error_stop_.begin(axis, what, hli_.channel_state, events_)) {
+    lift_.stop_now();
+    update_hold();
+  }
 }
 
 void Channel::error_stop(const std::string& reason) {
-  if (error_stop_.begin_for(reason, "", hli_.channel_state, events_)) update_hold();
+  if (error_stop_.begin_for(reason, "", hli_.channel_state, events_)) {
+    lift_.stop_now();
+    update_hold();
+  }
 }
 
 PathHold Channel::hold() const {
@@ -187,14 +214,19 @@ PathHold Channel::hold() const {
   hold.set(HoldReason::direction_change, backward_.change_pending(path_.direction()));
   hold.set(HoldReason::insert_command, insert_.pending() && hli_.channel_state == ChannelState::active);
   hold.set(HoldReason::programmed_stop, programmed_stop_.stopped());
+  hold.set(HoldReason::lift_positioning, lift_.holds_path());
   return hold;
 }
 
-void Channel::update_hold() { path_.set_velocity_factor(hold().velocity_factor(hli_.override.state_r)); }
+void Channel::update_hold() {
+  path_.set_velocity_factor(hold().velocity_factor(lift_.override_cap(hli_.override.state_r)));  // LIFT-8
+}
 
 void Channel::reach_block(const Block& block, bool run_commands) {
   events_.set_block(block);
   if (!run_commands) return;
+  lift_.reach_block(static_cast<size_t>(&block - path_.blocks().data()), path_.blocks(), hli_.override.state_r);
+  update_hold();
   if (actions_.queue(block)) update_hold();
   if (block.distance_prog_start) distance_.apply(*block.distance_prog_start);
   if (block.programmed_stop && programmed_stop_.begin(*block.programmed_stop)) update_hold();  // M00 / M01

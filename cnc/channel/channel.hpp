@@ -11,6 +11,7 @@
 //   drive_error_stop       RIG-3
 //   insert_stop            ISC-1 .. ISC-9 (axis_crossing: POSITION mode)
 //   programmed_stop        M00 / M01, continue motion, m01_stop_enable (ISC-5)
+//   lift                   LIFT-1 .. LIFT-8: the lift axis' setpoint in a lift range
 //   path_hold              why the path holds: velocity factor, stop_conditions_r
 //   path_interpolator      look-ahead, plan, block cursors, travel direction
 #include <cstdint>
@@ -27,6 +28,7 @@
 #include "feed_control.hpp"
 #include "hli.hpp"
 #include "insert_stop.hpp"
+#include "lift.hpp"
 #include "machine_config.hpp"
 #include "path_hold.hpp"
 #include "path_interpolator.hpp"
@@ -46,7 +48,8 @@ class Channel : private PathObserver {
   // answer to the previous cycle (lock-step, RIG-6).
   void step(int64_t cycle, const HliControl& control);
 
-  const std::vector<AxisSetpoint>& setpoints() const { return path_.setpoints(); }
+  // The path's, with a lift axis' own in a lift range.
+  const std::vector<AxisSetpoint>& setpoints() const { return setpoints_; }
   const HliState& hli() const { return hli_; }
   // Events raised since the last call.
   std::vector<Event> take_events() { return events_.take(); }
@@ -84,7 +87,10 @@ class Channel : private PathObserver {
 
   // PathObserver
   void reach_block(const Block& block, bool run_commands) override;
-  void travelled(double covered_distance) override { distance_.count(covered_distance); }
+  void travelled(double covered_distance) override {
+    distance_.count(covered_distance);
+    lift_.count(covered_distance);
+  }
   void finish_block(size_t index) override { ddtg_.finish_block(index); }
 
   MachineConfig machine_;
@@ -100,6 +106,9 @@ class Channel : private PathObserver {
   DriveErrorStop error_stop_;
   InsertStop insert_;
   ProgrammedStop programmed_stop_;
+  Lift lift_;
+  std::vector<AxisSetpoint> setpoints_;
+  bool backward_refused_ = false;  // warned once that a lift range forbids backward motion
   RisingEdge program_start_;
   bool decode_failed_ = false;
   int64_t start_cycle_ = 0;

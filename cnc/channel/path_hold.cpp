@@ -14,6 +14,7 @@ int32_t PathHold::stop_conditions() const {
   if (holds(HoldReason::channel_error)) bits |= stop_condition::channel_error;
   if (holds(HoldReason::m_function_ack)) bits |= stop_condition::plc_acknowledge | stop_condition::wait_techno_ack;
   if (holds(HoldReason::dwell)) bits |= stop_condition::delay_time;
+  if (holds(HoldReason::lift_positioning)) bits |= stop_condition::wait_for_axes;
   return bits;
 }
 

@@ -17,6 +17,7 @@ enum class HoldReason : uint8_t {
   direction_change,   // backward motion requested the other way (KRN-5)
   insert_command,     // an insert stop command stops the path briefly (ISC-6)
   programmed_stop,    // M00 / M01 stop state, also of an insert stop mark (ISC-5; bits from ProgrammedStop)
+  lift_positioning,   // the lift axis positions while the path waits (LIFT-2; HLI_SC_WAIT_FOR_AXES)
   count
 };
 

@@ -291,7 +291,7 @@ PathProgress PathInterpolator::interpolate(double t) {
     path = path_state_at(t);
   }
   if (look_ahead_.empty()) {
-    path_velocity_ = 0;
+    path_velocity_ = path_acceleration_ = 0;
     front_covered_ = 0;
     if (direction_ == TravelDirection::backward)
       return reached_contour_start ? PathProgress::reached_contour_start : PathProgress::at_contour_start;
@@ -312,7 +312,7 @@ PathProgress PathInterpolator::interpolate(double t) {
   cursors_.next_to_look_ahead = cursors_.next_to_run = cursors_.next_backward = blocks_.size();
   cursors_.lowest_stored = blocks_.size();
   for (AxisSetpoint& setpoint : setpoints_) setpoint.velocity = setpoint.acceleration = 0;
-  path_velocity_ = 0;
+  path_velocity_ = path_acceleration_ = 0;
   return PathProgress::setpoint_not_finite;
 }
 
@@ -329,6 +329,7 @@ bool PathInterpolator::output(const MotionState& path) {
   setpoints_ = std::move(next);
   front_covered_ = direction_sign() * (seg.covered_distance() * s / seg.length());
   path_velocity_ = path.v;
+  path_acceleration_ = path.a;
   return true;
 }
 

@@ -90,6 +90,7 @@ class PathInterpolator {
   const std::vector<AxisSetpoint>& setpoints() const { return setpoints_; }
   std::vector<double> setpoint_positions() const;
   double path_velocity() const { return path_velocity_; }
+  double path_acceleration() const { return path_acceleration_; }
   // The front block's part travelled so far, signed by the direction (DPS-1).
   double front_covered() const { return front_covered_; }
 
@@ -247,6 +248,7 @@ class PathInterpolator {
   std::optional<size_t> invalid_block_;
   std::vector<AxisSetpoint> setpoints_;
   double path_velocity_ = 0;
+  double path_acceleration_ = 0;
   double front_covered_ = 0;
 };
 

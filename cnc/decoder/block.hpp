@@ -118,12 +118,15 @@ struct Block {
   // A range without an end ends with the program's last block.
   std::optional<LiftStart> lift_start;
   bool lift_end = false;
+  // Set by the lift's preparation (lift_ranges): a range without path
+  // motion; the path stands here while the lift axis positions (LIFT-2).
+  bool lift_positioning = false;
 
   // The path stands still where this block is reached: for the PLC's
   // acknowledgement, a dwell, or a channel initialisation.
   bool stops_path() const {
     return !m_functions.empty() || dwell_s > 0 || programmed_stop || insert_cmd ||
-           short_cut_restriction == ShortCutRestriction::channel_initialisation;
+           short_cut_restriction == ShortCutRestriction::channel_initialisation || lift_positioning;
   }
   // Anything for the interpolator to do besides moving.
   bool has_command() const {

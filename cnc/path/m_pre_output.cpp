@@ -42,10 +42,12 @@ bool insert_pre_output(std::vector<Block>& out, const MFunction& m, const Block&
     const std::vector<double> split = segment.position(segment.length() - distance);
     out[i].motion = motion_until(out[i].motion, split);
     out[i].program_end = false;  // M30 ends the second part
+    out[i].lift_end = false;     // a lift range begins with the first part, ends with the second (LIFT-1)
     second.motion = motion_from(second.motion, split);
     second.continues_block = true;
     second.m_functions.clear();  // the line's own M functions went out before its first part
     second.dwell_s = 0;
+    second.lift_start.reset();
     out.insert(out.begin() + static_cast<std::ptrdiff_t>(i) + 1, std::move(second));
     insert_at = i + 1;
     break;

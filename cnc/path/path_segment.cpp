@@ -15,6 +15,8 @@ PathSegment::PathSegment(const Motion& m, const MachineConfig& machine)
   arc_ = m.type == MotionType::arc_cw || m.type == MotionType::arc_ccw;
   if (arc_) set_arc_limits(m, machine);
   else set_line_limits(m, machine);
+  // The lift function's caps in a lift range (LIFT-2, LIFT-3).
+  limits_ = {std::min(limits_.v, m.path_v_cap), std::min(limits_.a, m.path_a_cap), std::min(limits_.j, m.path_j_cap)};
   programmed_velocity_ = m.type == MotionType::rapid ? limits_.v : std::min(m.feed, limits_.v);
   set_covered_distance(machine);
 }

@@ -1,0 +1,161 @@
+#include "lift.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "position_profile.hpp"
+#include "velocity_profile.hpp"
+
+namespace hil::cnc {
+
+void Lift::prepare(std::vector<Block>& blocks, const std::vector<double>& start_position) {
+  ranges_ = prepare_lift_ranges(blocks, machine_, start_position);
+  covered_ = 0;
+  active_ = path_left_ = positioning_ = landed_ = missed_landing_ = false;
+  next_.reset();
+  advanced_.reset();
+  cap_ = 0;
+}
+
+void Lift::reach_block(size_t index, const std::vector<Block>& blocks, int32_t override_value) {
+  // Reaching a block after the range, or its last block when that one has
+  // no motion (LIFT_END, #FLUSH alone on a line), the path has run the range.
+  if (active_ && (index > range().end || (index == range().end && !blocks[index].has_motion))) path_left_ = true;
+  const auto starting = std::find_if(ranges_.begin(), ranges_.end(), [&](const LiftRange& r) { return r.start == index; });
+  if (starting == ranges_.end()) return;
+  const size_t r = static_cast<size_t>(starting - ranges_.begin());
+  if (active_ && path_left_ && !positioning_) finish();
+  if (active_) {
+    next_ = r;  // begins once the current range's lift axis has positioned
+    return;
+  }
+  start(r, override_value);
+}
+
+void Lift::start(size_t range_index, int32_t override_value) {
+  current_ = range_index;
+  active_ = true;
+  path_left_ = positioning_ = landed_ = false;
+  covered_at_start_ = covered_;
+  const LiftRange& g = range();
+  state_ = MotionState{g.z0, 0, 0, 0};
+  advanced_.reset();
+  cap_ = 0;
+  if (g.positioning) {
+    position_to(g.command.pos);
+  } else if (machine_.lift_method == LiftMethod::time_based) {
+    const AxisConfig& axis = machine_.axes[static_cast<size_t>(g.command.axis)];
+    advanced_.emplace(g.z0, g.command.pos, g.peak, advanced_lifting_limits(axis), machine_.cycle_time_s());
+    cap_ = override_value;
+  }
+}
+
+void Lift::position_to(double target) {
+  const AxisConfig& axis = machine_.axes[static_cast<size_t>(range().command.axis)];
+  const Limits lim = machine_.lift_method == LiftMethod::time_based ? advanced_lifting_limits(axis)
+                                                                    : Limits{axis.v_max, axis.a_max, axis.j_max};
+  positioning_ = true;
+  hold_position_ = target;
+  positioning_profile_ = position_profile(state_, target, lim, SlopeType::trapez);
+  since_positioning_ = 0;
+  advanced_.reset();
+}
+
+void Lift::land_now() {
+  if (!active_ || positioning_ || landed_) return;
+  position_to(range().command.pos);
+}
+
+void Lift::stop_now() {
+  if (!active_ || landed_ || (!advanced_ && !positioning_)) return;  // Lifting stops with the path
+  const AxisConfig& axis = machine_.axes[static_cast<size_t>(range().command.axis)];
+  const Limits lim = advanced_lifting_limits(axis);
+  position_to(velocity_change(state_.v, state_.a, 0, lim, SlopeType::trapez).end(state_).p);
+}
+
+void Lift::finish() {
+  const double pos = range().command.pos;
+  if (std::abs(state_.p - pos) > 1e-6 || std::abs(state_.v) > 1e-6) missed_landing_ = true;
+  active_ = positioning_ = landed_ = false;
+  advanced_.reset();
+  cap_ = 0;
+}
+
+bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vector<AxisSetpoint>& setpoints) {
+  if (!active_) return false;
+  bool changed = false;
+  const LiftRange& g = range();
+  const double dt = machine_.cycle_time_s();
+  if (positioning_) {
+    since_positioning_ += dt;
+    state_ = positioning_profile_.at(since_positioning_);
+    if (since_positioning_ >= positioning_profile_.duration()) {
+      state_ = MotionState{hold_position_, 0, 0, 0};
+      positioning_ = false;
+      landed_ = true;
+      changed = true;
+    }
+  } else if (landed_) {
+    state_ = MotionState{hold_position_, 0, 0, 0};
+  } else if (advanced_) {
+    const bool was_lowering = advanced_->lowering();
+    // The least time the path can take to the range's end: the rest of it
+    // at the highest velocity programmed from the front block on, at the
+    // highest override the lift accepts (LIFT-8).
+    const double rest = g.length - since_start_covered(path);
+    const size_t front = path.empty() ? g.end : static_cast<size_t>(&path.front_block() - path.blocks().data());
+    const size_t k = std::min(front < g.start ? 0 : front - g.start, g.v_ahead.size() - 1);
+    const int32_t accepted = cap_ > 0 ? cap_ : machine_.override_max_percent * 10;
+    const double v = g.v_ahead[k] * accepted / 1000.0;
+    const double earliest = v > 0 ? std::max(rest, 0.0) / v : std::numeric_limits<double>::infinity();
+    state_ = advanced_->step(earliest);
+    if (!was_lowering && advanced_->lowering()) {  // LIFT-8: the override at the start of lowering
+      if (override_value > 0) cap_ = cap_ > 0 ? std::min(cap_, override_value) : override_value;
+      changed = true;
+    }
+    if (advanced_->landed()) {
+      landed_ = true;
+      hold_position_ = g.command.pos;
+      cap_ = 0;
+      changed = true;
+    }
+  } else {  // Lifting: over the path parameter q, at tau = q / v_plan
+    const double q = std::clamp(since_start_covered(path), 0.0, g.length);
+    const MotionState z = g.profile.at(q / g.v_plan);
+    const double rate = path.path_velocity() / g.v_plan;
+    state_ = MotionState{z.p, z.v * rate, z.a * rate * rate + z.v * path.path_acceleration() / g.v_plan, 0};
+  }
+  const size_t axis = static_cast<size_t>(g.command.axis);
+  setpoints[axis] = AxisSetpoint{state_.p, state_.v, state_.a};
+  if (path_left_ && !positioning_) {
+    finish();
+    changed = true;
+    if (next_) {
+      start(*next_, override_value);
+      next_.reset();
+    }
+  }
+  return changed;
+}
+
+int32_t Lift::override_cap(int32_t override_value) const {
+  return active_ && cap_ > 0 ? std::min(override_value, cap_) : override_value;
+}
+
+bool Lift::forbids_backward(size_t front_block) const {
+  return std::any_of(ranges_.begin(), ranges_.end(), [&](const LiftRange& r) { return r.start <= front_block; });
+}
+
+bool Lift::active(size_t axis) const {
+  if (!active_ || static_cast<size_t>(range().command.axis) != axis) return false;
+  // A suppressed lift is active only where Advanced Lifting still moves the
+  // axis to a POS programmed elsewhere (LIFT-7, the text's special case).
+  return !range().suppressed || (machine_.lift_method == LiftMethod::time_based && range().command.pos != range().z0);
+}
+
+bool Lift::suppressed(size_t axis) const {
+  return active_ && static_cast<size_t>(range().command.axis) == axis && range().suppressed;
+}
+
+}  // namespace hil::cnc

@@ -1,0 +1,93 @@
+#pragma once
+// The lift function's channel unit (TF5200_lift_function.txt, LIFT-1 ..
+// LIFT-8): while the path runs a lift range, the lift axis' setpoint is
+// the lift's, not the path's (the blocks of a range keep the lift axis
+// where it stood). Lifting (path-based) couples it to the path parameter;
+// Advanced Lifting moves it in time (advanced_lifting); a range without
+// path motion, and a delete distance to go short cut in a range, position
+// it while the path waits.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "advanced_lifting.hpp"
+#include "block.hpp"
+#include "lift_ranges.hpp"
+#include "machine_config.hpp"
+#include "motion_profile.hpp"
+#include "path_interpolator.hpp"
+
+namespace hil::cnc {
+
+class Lift {
+ public:
+  explicit Lift(const MachineConfig& machine) : machine_(machine) {}
+
+  // At program start, before the path gets the blocks: finds the ranges,
+  // caps the path in them.
+  void prepare(std::vector<Block>& blocks, const std::vector<double>& start_position);
+  // The path's covered distance as the interpolator reports it (DPS-1 scale, signed).
+  void count(double covered) { covered_ += covered; }
+  // The path reached block `index` for the first time.
+  void reach_block(size_t index, const std::vector<Block>& blocks, int32_t override_value);
+  // Every block has run (program end, or the blocks before a decode error).
+  void all_blocks_run() { path_left_ = true; }
+  // Once per cycle after the path moved: the lift axis' setpoint into
+  // `setpoints`. True if what the lift asks of the path changed
+  // (override_cap, holds_path): the channel updates its hold.
+  bool update(const PathInterpolator& path, int32_t override_value, std::vector<AxisSetpoint>& setpoints);
+  // A delete distance to go short cut starts where the path stands: the
+  // lift axis lands on POS first (the path waits), then stays there until
+  // the range ends.
+  void land_now();
+  // The channel stops on an error: the lift axis brakes to rest as well.
+  void stop_now();
+
+  // The path waits for the lift axis (a range without path motion, a landing before a short cut).
+  bool holds_path() const { return active_ && positioning_; }
+  // LIFT-8: Advanced Lifting accepts no higher override than at its start
+  // while rising, than at the start of lowering while lowering.
+  int32_t override_cap(int32_t override_value) const;
+  // Backward motion would run the path into a range against its geometry:
+  // not in a program part at or after a range's start.
+  bool forbids_backward(size_t front_block) const;
+  // The lift axis had not reached POS when the path left the range (should
+  // not happen: the caller reports it as an error); once.
+  bool take_missed_landing() { return std::exchange(missed_landing_, false); }
+  // Per axis: lift_active, lift_suppressed (LIFT-7).
+  bool active(size_t axis) const;
+  bool suppressed(size_t axis) const;
+
+ private:
+  const LiftRange& range() const { return ranges_[current_]; }
+  void start(size_t range_index, int32_t override_value);
+  void finish();
+  void position_to(double target);
+  double since_start_covered(const PathInterpolator& path) const {
+    return covered_ + path.front_covered() - covered_at_start_;
+  }
+
+  const MachineConfig& machine_;
+  std::vector<LiftRange> ranges_;
+  double covered_ = 0;
+  // The range the lift runs now.
+  bool active_ = false;
+  size_t current_ = 0;
+  std::optional<size_t> next_;  // one that began while the current one still positioned
+  double covered_at_start_ = 0;
+  bool path_left_ = false;
+  MotionState state_;
+  std::optional<AdvancedLifting> advanced_;
+  int32_t cap_ = 0;  // LIFT-8, 0.1 %; 0: none
+  // Positioning (no path motion, or landing before a short cut): the profile, and how long it has run.
+  bool positioning_ = false;
+  bool landed_ = false;  // standing at hold_position_ until the range ends
+  double hold_position_ = 0;
+  MotionProfile positioning_profile_;
+  double since_positioning_ = 0;
+  bool missed_landing_ = false;
+};
+
+}  // namespace hil::cnc

@@ -1,0 +1,33 @@
+#include "advanced_lifting.hpp"
+
+#include "position_profile.hpp"
+
+namespace hil::cnc {
+
+AdvancedLifting::AdvancedLifting(double z0, double pos, double peak, const Limits& lim, double cycle_s)
+    : state_{z0, 0, 0, 0}, pos_(pos), peak_(peak), lim_(lim), cycle_s_(cycle_s) {}
+
+const MotionState& AdvancedLifting::step(double earliest_end_s) {
+  if (!lowering_) {
+    const MotionState next = position_profile(state_, peak_, lim_, SlopeType::trapez).at(cycle_s_);
+    const double landing = position_profile(next, pos_, lim_, SlopeType::trapez).duration();
+    if (landing + cycle_s_ <= earliest_end_s) {
+      state_ = next;
+      return state_;
+    }
+    land_now();
+  }
+  since_lowering_ += cycle_s_;
+  state_ = fall_.at(since_lowering_);
+  if (landed()) state_ = MotionState{pos_, 0, 0, 0};
+  return state_;
+}
+
+void AdvancedLifting::land_now() {
+  if (lowering_) return;
+  lowering_ = true;
+  fall_ = position_profile(state_, pos_, lim_, SlopeType::trapez);
+  since_lowering_ = 0;
+}
+
+}  // namespace hil::cnc

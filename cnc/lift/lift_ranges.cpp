@@ -1,0 +1,161 @@
+#include "lift_ranges.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "path_segment.hpp"
+
+namespace hil::cnc {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+// A range with less path than this has none: the lift axis positions alone.
+constexpr double no_path_mm = 1e-6;
+
+double overload_factor(const AxisConfig& axis) { return axis.dyn_monitoring_a_err / 1000.0; }
+
+// Lifting (path-based, LIFT-3): the lift axis' acceleration is z'' v^2 +
+// z' a_path (z over the path parameter). Planned at half of the overload
+// range (all of a_max when P-AXIS-00442 = 2000), so that the path's own
+// acceleration, capped in the range, can add the other half (the text:
+// a feed rate change may take the lift axis beyond a_max, never beyond
+// a_max * P-AXIS-00442 / 1000). A suppressed lift (LIFT-4) is planned the
+// same way within a_max itself.
+Limits lifting_limits(const AxisConfig& axis, double factor) {
+  return {axis.v_max, std::min(axis.a_max, factor * axis.a_max / 2), std::min(axis.j_max, factor * axis.j_max / 2)};
+}
+
+// The path in a Lifting range: no faster than the profile was planned for,
+// and its acceleration and jerk within what the lift axis' overload range
+// leaves (z''' v^3 + 3 z'' v a_path + z' j_path for the jerk).
+void cap_for_lifting(const LiftRange& range, const AxisConfig& axis, double factor, double& v_cap, double& a_cap,
+                     double& j_cap) {
+  const Limits lift = lifting_limits(axis, factor);
+  v_cap = range.v_plan;
+  const double slope = range.profile.max_speed() / range.v_plan;  // largest |dz/dq|
+  if (slope <= 0) return;
+  const double a_left = factor * axis.a_max - lift.a;
+  const double j_left = factor * axis.j_max - lift.j;
+  a_cap = std::min(a_left / slope, 0.5 * j_left * range.v_plan / (3 * lift.a));
+  j_cap = 0.5 * j_left / slope;
+}
+
+void plan_lifting(LiftRange& range, const AxisConfig& axis, double factor, double v_programmed) {
+  const Limits lim = lifting_limits(axis, factor);
+  const double asked = range.length / v_programmed;
+  // More internal blocks than it looks ahead: it cannot see the end, lifts
+  // to the summit at once and lowers only when the end comes into view.
+  const bool overflow = !range.suppressed && range.internal_blocks > lift_look_ahead_blocks;
+  if (overflow) {
+    const double to_summit = positioning_time(range.z0, range.peak, lim) + positioning_time(range.peak, range.command.pos, lim);
+    range.profile = LiftProfile::plan(range.z0, range.command.pos, range.peak, std::max(asked, to_summit), lim);
+  } else {
+    range.profile = LiftProfile::plan(range.z0, range.command.pos, range.peak, asked, lim);
+  }
+  range.v_plan = range.length / range.profile.duration();
+}
+
+}  // namespace
+
+Limits advanced_lifting_limits(const AxisConfig& axis) { return {axis.v_max, axis.accel_error_limit(), axis.j_max}; }
+
+std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const MachineConfig& machine,
+                                           const std::vector<double>& start_position) {
+  std::vector<LiftRange> ranges;
+  if (machine.lift_method == LiftMethod::none) return ranges;
+  // Where the ranges lie, and where the lift axis stands at each start.
+  std::vector<double> position = start_position;
+  std::optional<LiftRange> open;
+  auto close = [&](size_t k) {
+    open->end = k;
+    ranges.push_back(*open);
+    open.reset();
+  };
+  for (size_t k = 0; k < blocks.size(); ++k) {
+    const Block& block = blocks[k];
+    if (block.lift_start) {
+      const bool flush = open.has_value();  // #FLUSH: LIFT_END and LIFT_START here (LIFT-5)
+      if (flush) close(k);
+      open = LiftRange{};
+      open->start = k;
+      open->command = *block.lift_start;
+      open->z0 = position[static_cast<size_t>(block.lift_start->axis)];
+      if (block.lift_end && !flush) {  // the single-block Z[LIFT ..]
+        if (block.has_motion) position = block.motion.end;
+        close(k);
+        continue;
+      }
+    } else if (block.lift_end && open) {
+      if (block.has_motion) position = block.motion.end;
+      close(k);
+      continue;
+    }
+    if (block.has_motion) position = block.motion.end;
+  }
+  if (open) close(blocks.size() - 1);  // program end without LIFT_END (LIFT-5)
+
+  const double override_max = machine.override_max_percent / 100.0;
+  for (LiftRange& range : ranges) {
+    const AxisConfig& axis = machine.axes[static_cast<size_t>(range.command.axis)];
+    const size_t n = range.end - range.start + 1;
+    std::vector<double> programmed(n, 0.0);
+    double v_programmed = 0;
+    for (size_t k = range.start; k <= range.end; ++k) {
+      const Block& block = blocks[k];
+      if (block.has_motion || !block.m_functions.empty()) ++range.internal_blocks;
+      if (!block.has_motion) continue;
+      const PathSegment segment(block.motion, machine);
+      range.length += segment.covered_distance();
+      programmed[k - range.start] = segment.programmed_velocity();
+      v_programmed = std::max(v_programmed, segment.programmed_velocity());
+    }
+    range.suppressed = machine.lift_min_dist_mm > 0 && range.length < machine.lift_min_dist_mm;
+    const double z0 = range.z0, pos = range.command.pos, limit = range.command.pos_limit;
+    if (range.command.down) range.peak = range.suppressed ? std::min(z0, pos) : std::min({limit, z0, pos});
+    else range.peak = range.suppressed ? std::max(z0, pos) : std::max({limit, z0, pos});
+
+    double v_cap = inf, a_cap = inf, j_cap = inf;
+    if (range.length < no_path_mm || !(v_programmed > 0)) {
+      range.positioning = pos != z0;
+      if (range.positioning) blocks[range.start].lift_positioning = true;
+    } else if (machine.lift_method == LiftMethod::time_based) {
+      // The path may not reach the end before the lift axis could land even
+      // by the direct move, at the highest override (LIFT-2).
+      const double direct = positioning_time(z0, pos, advanced_lifting_limits(axis));
+      if (direct > 0) v_cap = range.length / (direct * override_max);
+    } else {
+      const double factor = range.suppressed ? 1.0 : overload_factor(axis);
+      plan_lifting(range, axis, factor, v_programmed);
+      cap_for_lifting(range, axis, factor, v_cap, a_cap, j_cap);
+    }
+    range.v_ahead.assign(n, 0.0);
+    double ahead = 0;
+    for (size_t i = n; i-- > 0;) {
+      ahead = std::max(ahead, std::min(programmed[i], v_cap));
+      range.v_ahead[i] = ahead;
+    }
+    // No contouring into or out of a range: the lift axis is at rest there
+    // and joins the path again (TF5200: smoothing suppressed at lift start
+    // and end).
+    std::optional<size_t> last_in_range;
+    for (size_t k = range.start; k <= range.end; ++k) {
+      Block& block = blocks[k];
+      if (!block.has_motion) continue;
+      block.motion.path_v_cap = std::min(block.motion.path_v_cap, v_cap);
+      block.motion.path_a_cap = std::min(block.motion.path_a_cap, a_cap);
+      block.motion.path_j_cap = std::min(block.motion.path_j_cap, j_cap);
+      last_in_range = k;
+    }
+    if (last_in_range && blocks[*last_in_range].transition == BlockTransition::contour)
+      blocks[*last_in_range].transition = BlockTransition::standard;
+    for (size_t k = range.start; k-- > 0;) {
+      if (!blocks[k].has_motion) continue;
+      if (blocks[k].transition == BlockTransition::contour) blocks[k].transition = BlockTransition::standard;
+      break;
+    }
+  }
+  return ranges;
+}
+
+}  // namespace hil::cnc

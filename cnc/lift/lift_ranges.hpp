@@ -1,0 +1,54 @@
+#pragma once
+// The lift function's path preparation (TF5200_lift_function.txt): finds
+// the lift ranges of a decoded program, plans what can be planned before
+// the path runs, and caps the path in each range where the lift needs it.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "block.hpp"
+#include "lift_profile.hpp"
+#include "machine_config.hpp"
+
+namespace hil::cnc {
+
+// Lifting (path-based) looks at most this many internal blocks ahead
+// between the start and the end of a lift (LIFT-3).
+constexpr size_t lift_look_ahead_blocks = 20;
+
+struct LiftRange {
+  size_t start = 0;  // the block with lift_start
+  size_t end = 0;    // the range's last block (lift_end, or the program's last)
+  LiftStart command;
+  double z0 = 0;     // mm, where the lift axis stands at the start
+  // mm, the summit aimed for: POS_LIMIT, or POS or z0 where they lie beyond
+  // it (LIFT-5: the limit has no effect); max(z0, POS) when suppressed.
+  double peak = 0;
+  double length = 0;  // mm, the range's path on the dist_prog_start scale (DPS-1)
+  size_t internal_blocks = 0;  // motion blocks and blocks with M functions
+  bool suppressed = false;     // LIFT-4: length < P-CHAN-00244
+  bool positioning = false;    // no path motion: the lift axis positions while the path waits
+  // Lifting (path-based, LIFT-3): the profile, run at path parameter q over
+  // q / v_plan, and the path velocity it was planned for.
+  LiftProfile profile;
+  double v_plan = 0;
+  // Advanced Lifting (LIFT-2): for each block of the range from the start,
+  // the highest velocity the path is programmed to from there to the end
+  // (what bounds the time the path can take to the range's end from below).
+  std::vector<double> v_ahead;
+
+  bool contains(size_t block) const { return block >= start && block <= end; }
+};
+
+// The lift axis' limits for its own motion: Advanced Lifting plans up to
+// a_max * P-AXIS-00442 / 1000 (the overload range); Lifting plans within
+// what is left of that once the path's own acceleration adds to it.
+Limits advanced_lifting_limits(const AxisConfig& axis);
+
+// The ranges of `blocks` (positions of the axes at program start:
+// `start_position`), with their motions' path caps set and ranges without
+// path motion marked (Block::lift_positioning).
+std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const MachineConfig& machine,
+                                           const std::vector<double>& start_position);
+
+}  // namespace hil::cnc
