@@ -60,13 +60,19 @@ std::string describe(const FuzzRun& run, const Failure& f) {
   return out.str();
 }
 
+// Lift programs run on a machine that lifts time-based (even seeds) or path-based.
+LiftMethod lift_method_of(const FuzzRun& run) {
+  if (run.kind != ProgramKind::lift) return LiftMethod::none;
+  return run.seed % 2 == 0 ? LiftMethod::time_based : LiftMethod::path_based;
+}
+
 FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   FuzzRun run;
   run.seed = seed;
   Rng rng(seed);
   run.kind = options.kind ? *options.kind : all_program_kinds[seed % std::size(all_program_kinds)];
   run.override_max_percent = rng.chance(0.5) ? 100 : 120;
-  const MachineConfig machine = xyz_fuzz_machine(run.override_max_percent);
+  const MachineConfig machine = xyz_fuzz_machine(run.override_max_percent, lift_method_of(run));
   const double dt = machine.cycle_time_s();
   run.program = generate_program(mix_seed(seed ^ 0x5eed), {run.kind, options.min_items, options.max_items}, machine);
   run.expectations = !options.program_text;
@@ -142,7 +148,7 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
 FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   FuzzRun run = prepare_channel_fuzz(seed, options);
   if (!run.failures.empty()) return run;
-  const MachineConfig machine = xyz_fuzz_machine(run.override_max_percent);
+  const MachineConfig machine = xyz_fuzz_machine(run.override_max_percent, lift_method_of(run));
   const double dt = machine.cycle_time_s();
   const GeneratedProgram& program = run.program;
   const bool expectations = run.expectations;

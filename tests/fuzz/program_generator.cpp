@@ -20,6 +20,7 @@ const char* to_string(ProgramKind kind) {
     case ProgramKind::steps: return "steps";
     case ProgramKind::commands: return "commands";
     case ProgramKind::contour: return "contour";
+    case ProgramKind::lift: return "lift";
   }
   return "?";
 }
@@ -30,8 +31,9 @@ std::optional<ProgramKind> parse_program_kind(const std::string& name) {
   return std::nullopt;
 }
 
-MachineConfig xyz_fuzz_machine(int32_t override_max_percent) {
+MachineConfig xyz_fuzz_machine(int32_t override_max_percent, LiftMethod lift) {
   MachineConfig m;
+  m.lift_method = lift;
   m.name = "xyz_mill (fuzz)";
   m.cycle_time_us = 1000;
   m.override_max_percent = override_max_percent;
@@ -80,20 +82,25 @@ constexpr int step_directions[][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}
 enum Item {
   long_line, short_line, tiny_line, rapid, steps, arc_random, tangent_chain, full_circle, helix, tiny_arc,
   g91_section, feed_change, m_alone, m_with_motion, dwell, marker, dps_command, slope,
-  contour_mode, chord_polyline, near_collinear, item_count
+  contour_mode, chord_polyline, near_collinear, lift_range, item_count
 };
 
 // Weights of the items per program kind (columns in Item order).
 constexpr double weights[][item_count] = {
     //        long short tiny rapid steps arc  chain full helix tinyarc g91 feed m   m+mv dwell mark dps slope
-    //        contour-mode chord-polyline near-collinear
-    /*mixed*/ {2, 2, 1, 1, 1.5, 1.5, 1.5, 0.5, 0.5, 0.5, 1, 1, 0.7, 0.7, 0.5, 0.7, 0.6, 0.5, 0, 0, 0},
-    /*lines*/ {3, 3, 1, 1.5, 1, 0, 0, 0, 0, 0, 1, 1.5, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-    /*arcs*/ {0, 1, 0, 0, 0, 3, 3, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-    /*steps*/ {0, 1, 2, 0, 6, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-    /*commands*/ {1, 2, 0, 0, 0.5, 0.5, 0, 0, 0, 0, 0.3, 0.5, 2, 2, 1.5, 2, 1.5, 0, 0, 0, 0},
-    /*contour*/ {1, 2, 1, 0.5, 1.5, 1, 1.5, 0.3, 0.3, 0.3, 0.5, 1, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3, 2.5, 4, 2},
+    //        contour-mode chord-polyline near-collinear lift-range
+    /*mixed*/ {2, 2, 1, 1, 1.5, 1.5, 1.5, 0.5, 0.5, 0.5, 1, 1, 0.7, 0.7, 0.5, 0.7, 0.6, 0.5, 0, 0, 0, 0},
+    /*lines*/ {3, 3, 1, 1.5, 1, 0, 0, 0, 0, 0, 1, 1.5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    /*arcs*/ {0, 1, 0, 0, 0, 3, 3, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    /*steps*/ {0, 1, 2, 0, 6, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    /*commands*/ {1, 2, 0, 0, 0.5, 0.5, 0, 0, 0, 0, 0.3, 0.5, 2, 2, 1.5, 2, 1.5, 0, 0, 0, 0, 0},
+    /*contour*/ {1, 2, 1, 0.5, 1.5, 1, 1.5, 0.3, 0.3, 0.3, 0.5, 1, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3, 2.5, 4, 2, 0},
+    /*lift*/ {1.5, 1.5, 0.5, 1, 0.5, 1, 0.5, 0.2, 0.3, 0.3, 0.3, 1, 0.5, 0.5, 0.3, 0.5, 0.3, 0.3, 0, 0, 0, 4},
 };
+
+// What may stand inside a lift range: no motion of the lift axis Z (LIFT-6).
+constexpr Item in_lift_items[] = {long_line, short_line, tiny_line, rapid,  arc_random, tangent_chain, full_circle,
+                                  tiny_arc,  feed_change, m_alone,  m_with_motion, dwell, marker, dps_command, slope};
 
 class Generator {
  public:
@@ -118,6 +125,7 @@ class Generator {
     const int items = static_cast<int>(rng_.integer(options_.min_items, options_.max_items));
     for (int i = 0; i < items; ++i) item(pick_item(false));
     if (!absolute_) emit("G90");
+    if (in_lift_) pos_[2] = lift_pos_;  // M30 ends the range (LIFT-5)
     emit("M30");
     for (const std::string& line : out_.lines) out_.text += line + "\n";
     out_.end_position[ix_] = pos_[0];
@@ -130,12 +138,60 @@ class Generator {
 
  private:
   Item pick_item(bool in_g91) {
+    if (in_lift_) return in_lift_items[rng_.integer(0, std::size(in_lift_items) - 1)];
     const double(&w)[item_count] = weights[static_cast<int>(options_.kind)];
     for (;;) {
       const Item it = static_cast<Item>(rng_.pick(w));
-      if (in_g91 && it == g91_section) continue;
+      if (in_g91 && (it == g91_section || it == lift_range)) continue;
       return it;
     }
+  }
+
+  // LIFT-1: a lift range around a few items (#FLUSH now and then, left
+  // open to M30 now and then), or a single-block lift on an XY line. POS
+  // left out, between, or beyond POS_LIMIT (LIFT-5); G91; DOWN only where
+  // the machine lifts time-based.
+  void lift() {
+    const bool down = machine_.lift_method == LiftMethod::time_based && rng_.chance(0.2);
+    const double z = pos_[2], sign = down ? -1 : 1;
+    const bool relative = rng_.chance(0.3);
+    std::string words = std::string(down ? " DOWN" : "") + (relative ? " G91" : rng_.chance(0.2) ? " G90" : "");
+    auto value = [&](double at, const char* key, double& got) {
+      const std::string text = num(relative ? at - z : at);
+      got = relative ? z + read_back(text) : read_back(text);
+      words += std::string(" ") + key + "=" + text;
+    };
+    double limit = 0, pos = z;
+    const double limit_wanted = z + sign * rng_.log_uniform(0.2, 60);
+    const size_t pos_kind = rng_.pick({1.0, 3.0, 0.5});  // none, near where it stands, beyond the limit
+    if (pos_kind == 1) value(z + rng_.uniform(-10, 10), "POS", pos);
+    if (pos_kind == 2) value(limit_wanted + sign * rng_.uniform(0.1, 10), "POS", pos);
+    value(limit_wanted, "POS_LIMIT", limit);
+    if (rng_.chance(0.2)) {
+      extra_ = " Z[LIFT" + words + "]";
+      in_lift_ = true;
+      const bool moved_xy = line_by(direction(false), rng_.log_uniform(0.5, 50), 1);
+      in_lift_ = false;
+      extra_.clear();
+      if (moved_xy) pos_[2] = pos;
+      return;
+    }
+    emit("Z[LIFT_START" + words + "]");
+    in_lift_ = true;
+    lift_pos_ = pos;
+    const int n = static_cast<int>(rng_.integer(0, 8));
+    for (int i = 0; i < n; ++i) {
+      if (rng_.chance(0.08)) {  // LIFT-5: LIFT_END and LIFT_START here
+        emit(rng_.chance(0.5) ? "#FLUSH" : "#FLUSH WAIT");
+        pos_[2] = limit;
+        continue;
+      }
+      item(pick_item(false));
+    }
+    if (rng_.chance(0.1)) return;  // open to M30 (LIFT-5): the items after it stay in the range
+    emit("Z[LIFT_END]");
+    in_lift_ = false;
+    pos_[2] = pos;
   }
 
   void item(Item it) {
@@ -204,6 +260,7 @@ class Generator {
       case contour_mode: contour_switch(false); break;
       case chord_polyline: polyline(); break;
       case near_collinear: nearly_straight(); break;
+      case lift_range: lift(); break;
       case item_count: break;
     }
   }
@@ -235,6 +292,7 @@ class Generator {
   // A unit direction: mostly in XY, now and then with Z or along one axis;
   // towards the origin when the position wanders far.
   Vec direction(bool with_z) {
+    with_z = with_z && !in_lift_;
     Vec d{};
     if (rng_.chance(0.25)) {
       d[rng_.integer(0, with_z ? 2 : 1)] = rng_.chance(0.5) ? 1 : -1;
@@ -265,6 +323,7 @@ class Generator {
     got = pos_;
     for (int k = 0; k < 3; ++k) {
       if (!xy && k < 2) continue;
+      if (k == 2 && in_lift_) continue;  // the lift axis is not programmed in a range (LIFT-6)
       const bool changed = want[k] != pos_[k];
       if (!changed && !rng_.chance(0.1)) continue;  // now and then an axis that does not move
       const std::string text = num(absolute_ ? want[k] : want[k] - pos_[k]);
@@ -346,6 +405,7 @@ class Generator {
     // The decoder allows 1e-3 mm; the kernel blends the radius along the
     // arc. Kept at round-off, so that the path is the intended circle.
     if (std::abs(r - r_end) > 1e-9 * (1 + r)) return false;
+    if (in_lift_) got[2] = pos_[2];
     const double z = got[2] - pos_[2];
     const double planar = r * sweep, length = std::hypot(planar, z);
     emit(std::string(ccw ? "G03" : "G02") + words + " I" + ti + " J" + tj + feed_words() + extra_ + transition_next_);
@@ -519,6 +579,8 @@ class Generator {
   GeneratedProgram out_;
   Vec pos_{0, 0, 0};
   bool absolute_ = true;
+  bool in_lift_ = false;  // inside a lift range: Z is not programmed
+  double lift_pos_ = 0;   // where the open range lands
   double feed_ = 0;  // mm/s
   std::string feed_word_;
   bool feed_on_next_ = false;  // write F on the next motion line

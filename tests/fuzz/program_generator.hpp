@@ -33,11 +33,18 @@ enum class ProgramKind {
   // contour): the by-seed rotation keeps its five kinds, so that the seeds
   // of known failures still make the same programs.
   contour,
+  // LIFT-1 .. LIFT-5: lift ranges (Z[LIFT_START ..] .. Z[LIFT_END], the
+  // single-block Z[LIFT ..], G91, DOWN with Advanced Lifting, POS beyond
+  // POS_LIMIT, #FLUSH inside, a range left open to M30) around XY lines,
+  // arcs, M functions, dwells and markers; the machine lifts time-based
+  // on even seeds, path-based on odd ones. Chosen by name only.
+  lift,
 };
 constexpr ProgramKind all_program_kinds[] = {ProgramKind::mixed, ProgramKind::lines, ProgramKind::arcs,
                                              ProgramKind::steps, ProgramKind::commands};
-constexpr ProgramKind named_program_kinds[] = {ProgramKind::mixed, ProgramKind::lines,    ProgramKind::arcs,
-                                               ProgramKind::steps, ProgramKind::commands, ProgramKind::contour};
+constexpr ProgramKind named_program_kinds[] = {ProgramKind::mixed,    ProgramKind::lines,   ProgramKind::arcs,
+                                               ProgramKind::steps,    ProgramKind::commands, ProgramKind::contour,
+                                               ProgramKind::lift};
 const char* to_string(ProgramKind kind);
 std::optional<ProgramKind> parse_program_kind(const std::string& name);
 
@@ -80,6 +87,6 @@ GeneratedProgram generate_program(uint64_t seed, const ProgramOptions& options, 
 // runs from anywhere): X, Y 250 mm/s, 2000 mm/s^2, 40000 mm/s^3; Z 150,
 // 1500, 30000; cycle 1 ms; fb_storage_size 1,000,000 (DDTG and backward
 // motion available).
-MachineConfig xyz_fuzz_machine(int32_t override_max_percent = 100);
+MachineConfig xyz_fuzz_machine(int32_t override_max_percent = 100, LiftMethod lift = LiftMethod::none);
 
 }  // namespace hil::fuzz

@@ -1,0 +1,362 @@
+// The lift function through the channel, cycle by cycle
+// (TF5200_lift_function.txt, LIFT-1 .. LIFT-8): the text's programs and
+// special cases on both methods; every run also passes the offline limit
+// check, with the lift axis' overload range where lift_active says so.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "channel.hpp"
+#include "limit_check.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+
+namespace {
+
+constexpr size_t X = 0, Z = 2;
+
+struct LiftRig {
+  explicit LiftRig(const std::string& program, MachineConfig machine)
+      : machine_config(machine), channel(machine, program), checker(machine_config) {
+    control.program_start.enable_w = true;
+    control.m_function_ack.enable_w = true;
+    control.feedhold.enable_w = true;
+    control.override.enable_w = true;
+    control.override.command_w = 1000;
+    control.delete_distance_to_go.enable_w = true;
+  }
+  MachineConfig machine_config;
+  Channel channel;
+  logger::LimitChecker checker;
+  HliControl control;
+  int64_t k = 0;
+  std::vector<double> z, x;
+  std::vector<bool> lifting;
+  double z_peak = -1e9, z_floor = 1e9;
+
+  const HliState& hli() const { return channel.hli(); }
+  double axis(size_t i) const { return channel.setpoints()[i].position; }
+  void step() {
+    channel.step(k, control);
+    for (size_t i = 0; i < channel.setpoints().size(); ++i)
+      checker.add_setpoint(static_cast<int>(i), k, channel.setpoints()[i].position, hli().lift_active[i]);
+    z.push_back(axis(Z));
+    x.push_back(axis(X));
+    lifting.push_back(hli().lift_active[Z]);
+    z_peak = std::max(z_peak, axis(Z));
+    z_floor = std::min(z_floor, axis(Z));
+    ++k;
+    control.program_start.command_w = false;
+    control.m_function_ack.command_w = hli().m_function_request_r;  // acknowledge at once
+  }
+  void start() {
+    control.program_start.command_w = true;
+    step();
+  }
+  bool done() const {
+    return hli().channel_state == ChannelState::program_end || hli().channel_state == ChannelState::error;
+  }
+  void run_to_end(int64_t limit = 200000) {
+    while (!done() && k < limit) step();
+  }
+  template <typename Condition>
+  void run_until(Condition c, int64_t limit = 200000) {
+    while (!c() && !done() && k < limit) step();
+  }
+  void require_within_limits() {
+    const logger::CheckReport report = checker.finish();
+    for (const logger::Violation& v : report.violations)
+      UNSCOPED_INFO(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
+    REQUIRE(report.violations.empty());
+  }
+  double largest_z_acceleration() const {
+    double a = 0;
+    const double dt = machine_config.cycle_time_s();
+    for (size_t i = 2; i < z.size(); ++i) a = std::max(a, std::abs(z[i] - 2 * z[i - 1] + z[i - 2]) / (dt * dt));
+    return a;
+  }
+};
+
+// The text's cross-block example: laser off, lift over 100 mm of XY
+// positioning, land at 12.
+const std::string cross_block =
+    "N10 G01 X0 Y0 Z10 F6000\n"
+    "N20 Z[LIFT_START POS=12 POS_LIMIT=30]\n"
+    "N30 X40\n"
+    "N40 X60 Y10\n"
+    "N50 X100 Y0\n"
+    "N60 Z[LIFT_END]\n"
+    "N70 X110\n"
+    "N80 M30\n";
+
+double run_peak(const std::string& program, const MachineConfig& machine) {
+  LiftRig rig(program, machine);
+  rig.start();
+  rig.run_to_end();
+  REQUIRE(rig.hli().channel_state == ChannelState::program_end);
+  rig.require_within_limits();
+  return rig.z_peak;
+}
+
+}  // namespace
+
+TEST_CASE("LIFT-2 Advanced Lifting: the lift axis rises towards POS_LIMIT and lands on POS at LIFT_END, in the "
+          "overload range",
+          "[lift][channel]") {
+  const MachineConfig m = test::xyz_lift_machine();
+  LiftRig rig(cross_block, m);
+  rig.start();
+  rig.run_until([&] { return rig.hli().block_nr_r == 70; });
+  CHECK(rig.axis(Z) == Approx(12).margin(1e-9));  // landed when the path reached N70
+  rig.run_to_end();
+  REQUIRE(rig.hli().channel_state == ChannelState::program_end);
+  CHECK(rig.z_peak == Approx(30).margin(1e-6));
+  CHECK(rig.axis(Z) == Approx(12));
+  CHECK(rig.axis(X) == Approx(110));
+  const AxisConfig& z = m.axes[Z];
+  CHECK(rig.largest_z_acceleration() > z.a_max);  // the overload range is used
+  CHECK(rig.largest_z_acceleration() <= z.accel_error_limit() * (1 + 1e-6));
+  rig.require_within_limits();
+}
+
+TEST_CASE("LIFT-2 LIFT-3: on the same program Advanced Lifting lifts higher than Lifting (Fig. 9)", "[lift][channel]") {
+  // 40 mm of positioning at 100 mm/s: 0.4 s, too short for either to reach 100.
+  const std::string program =
+      "N10 G01 X0 Y0 Z10 F6000\n"
+      "N20 Z[LIFT_START POS=12 POS_LIMIT=100]\n"
+      "N30 X20\n"
+      "N40 X40\n"
+      "N50 Z[LIFT_END]\n"
+      "N60 M30\n";
+  const double advanced = run_peak(program, test::xyz_lift_machine());
+  const double lifting = run_peak(program, test::xyz_lifting_machine());
+  INFO("Advanced Lifting " << advanced << " mm, Lifting " << lifting << " mm");
+  CHECK(advanced > lifting + 1);
+  CHECK(lifting > 12);
+}
+
+TEST_CASE("LIFT-3 Lifting: the lift follows the path parameter; feed hold stops it with the path", "[lift][channel]") {
+  LiftRig rig(cross_block, test::xyz_lifting_machine());
+  rig.start();
+  rig.run_until([&] { return rig.hli().block_nr_r == 40; });
+  const double z_before = rig.axis(Z);
+  CHECK(z_before > 10);
+  rig.control.feedhold.command_w = true;
+  rig.control.feedhold.enable_w = true;
+  rig.run_until([&] { return rig.hli().path_velocity == 0; });
+  const double z_held = rig.axis(Z);
+  for (int i = 0; i < 500; ++i) rig.step();
+  CHECK(rig.axis(Z) == z_held);  // stands with the path
+  rig.control.feedhold.command_w = false;
+  rig.run_to_end();
+  REQUIRE(rig.hli().channel_state == ChannelState::program_end);
+  CHECK(rig.axis(Z) == Approx(12));
+  // The feed hold's braking adds to the lift's own acceleration: beyond
+  // a_max perhaps, never beyond the P-AXIS-00442 limit.
+  rig.require_within_limits();
+}
+
+TEST_CASE("LIFT-2 Advanced Lifting: under feed hold the lift axis goes on to its height", "[lift][channel]") {
+  LiftRig rig(cross_block, test::xyz_lift_machine());
+  rig.start();
+  rig.run_until([&] { return rig.hli().block_nr_r == 30 && rig.axis(Z) > 11; });
+  rig.control.feedhold.command_w = true;
+  rig.run_until([&] { return rig.hli().path_velocity == 0; });
+  const double x_held = rig.axis(X);
+  for (int i = 0; i < 3000; ++i) rig.step();
+  CHECK(rig.axis(X) == x_held);
+  CHECK(rig.z_peak == Approx(30).margin(1e-6));  // it rose on while the path stood
+  rig.control.feedhold.command_w = false;
+  rig.run_to_end();
+  REQUIRE(rig.hli().channel_state == ChannelState::program_end);
+  CHECK(rig.axis(Z) == Approx(12));
+  rig.require_within_limits();
+}
+
+TEST_CASE("LIFT-2 a range without path motion: the path waits while the lift axis positions", "[lift][channel]") {
+  for (const MachineConfig& m : {test::xyz_lift_machine(), test::xyz_lifting_machine()}) {
+    LiftRig rig("N10 G01 X10 Y0 Z10 F6000\nN20 Z[LIFT_START POS=40 POS_LIMIT=50]\nN30 Z[LIFT_END]\nN40 X20\nN50 M30\n",
+                m);
+    rig.start();
+    bool waited = false;
+    rig.run_until([&] {
+      waited = waited || (rig.hli().stop_conditions_r & stop_condition::wait_for_axes);
+      return rig.axis(X) > 10 + 1e-9;
+    });
+    CHECK(waited);
+    CHECK(rig.axis(Z) == Approx(40));  // the path moved on only after the lift axis got there
+    rig.run_to_end();
+    CHECK(rig.hli().channel_state == ChannelState::program_end);
+    CHECK(rig.z_peak == Approx(40));
+    rig.require_within_limits();
+  }
+}
+
+TEST_CASE("LIFT-5 POS beyond POS_LIMIT: the limit has no effect, the target is reached at the start", "[lift][channel]") {
+  const std::string program =
+      "N10 G01 X0 Y0 Z10 F6000\nN20 Z[LIFT_START POS=40 POS_LIMIT=30]\nN30 X10\nN40 X20\nN50 X35\nN60 Z[LIFT_END]\n"
+      "N70 X45\nN80 M30\n";
+  for (const MachineConfig& m : {test::xyz_lift_machine(), test::xyz_lifting_machine()}) {
+    LiftRig rig(program, m);
+    rig.start();
+    rig.run_until([&] { return rig.hli().block_nr_r == 50; });
+    CHECK(rig.axis(Z) == Approx(40).margin(1e-6));  // there before the range's last block
+    rig.run_to_end();
+    CHECK(rig.z_peak == Approx(40));
+    CHECK(rig.axis(Z) == Approx(40));
+    rig.require_within_limits();
+  }
+}
+
+TEST_CASE("LIFT-5 a syntax error in the range: the path runs to the last good block, the lift axis parks at POS_LIMIT",
+          "[lift][channel]") {
+  const std::string program =
+      "N10 G01 X0 Y0 Z10 F6000\nN20 Z[LIFT_START POS_LIMIT=30]\nN30 X10\nN40 X20\nN50 X35\nN100 G01 X=?\n"
+      "N560 X50\nN600 Z[LIFT_END]\nN610 M30\n";
+  for (const MachineConfig& m : {test::xyz_lift_machine(), test::xyz_lifting_machine()}) {
+    LiftRig rig(program, m);
+    rig.start();
+    rig.run_to_end();
+    CHECK(rig.hli().channel_state == ChannelState::error);
+    CHECK(rig.axis(X) == Approx(35));
+    CHECK(rig.axis(Z) == Approx(30));
+    rig.require_within_limits();
+  }
+}
+
+TEST_CASE("LIFT-5 #FLUSH acts as LIFT_END and LIFT_START: the text's equivalent programs give the same trace",
+          "[lift][channel]") {
+  const std::string flush =
+      "N20 G01 X40 Z2 F3000\nN30 Z[LIFT_START POS=12 POS_LIMIT=40]\nN40 X50\nN50 X40\nN60 #FLUSH\nN70 X30\nN80 X20\n"
+      "N90 Z[LIFT_END]\nN100 M30\n";
+  const std::string equivalent =
+      "N20 G01 X40 Z2 F3000\nN30 Z[LIFT_START POS=40 POS_LIMIT=40]\nN40 X50\nN50 X40\nN60 Z[LIFT_END]\n"
+      "N60 Z[LIFT_START POS=12 POS_LIMIT=40]\nN70 X30\nN80 X20\nN90 Z[LIFT_END]\nN100 M30\n";
+  for (const MachineConfig& m : {test::xyz_lift_machine(), test::xyz_lifting_machine()}) {
+    LiftRig a(flush, m), b(equivalent, m);
+    a.start();
+    b.start();
+    a.run_to_end();
+    b.run_to_end();
+    CHECK(a.hli().channel_state == ChannelState::program_end);
+    REQUIRE(a.z.size() == b.z.size());
+    CHECK(a.z == b.z);
+    CHECK(a.x == b.x);
+    CHECK(a.axis(Z) == Approx(12));
+    a.require_within_limits();
+  }
+}
+
+TEST_CASE("LIFT-5 program end without LIFT_END acts as LIFT_END", "[lift][channel]") {
+  for (const MachineConfig& m : {test::xyz_lift_machine(), test::xyz_lifting_machine()}) {
+    LiftRig rig("N10 G01 X0 Z10 F6000\nN20 Z[LIFT_START POS=12 POS_LIMIT=30]\nN30 X50\nN40 M30\n", m);
+    rig.start();
+    rig.run_to_end();
+    CHECK(rig.hli().channel_state == ChannelState::program_end);
+    CHECK(rig.axis(Z) == Approx(12));
+    CHECK(rig.z_peak > 12);
+    CHECK_FALSE(rig.hli().lift_active[Z]);
+    rig.require_within_limits();
+  }
+}
+
+TEST_CASE("LIFT-4 LIFT-7 P-CHAN-00244: a shorter path suppresses the lift, the axis goes straight to POS",
+          "[lift][channel]") {
+  const std::string program = "N10 G01 X0 Z10 F6000\nN20 Z[LIFT_START POS=14 POS_LIMIT=30]\nN30 X5\nN40 Z[LIFT_END]\nN50 M30\n";
+  SECTION("Advanced Lifting: active and suppressed at once (POS is programmed)") {
+    MachineConfig m = test::xyz_lift_machine();
+    m.lift_min_dist_mm = 10;
+    LiftRig rig(program, m);
+    rig.start();
+    bool both = false;
+    rig.run_until([&] {
+      both = both || (rig.hli().lift_active[Z] && rig.hli().lift_suppressed[Z]);
+      return rig.hli().block_nr_r == 40;
+    });
+    rig.run_to_end();
+    CHECK(both);
+    CHECK(rig.z_peak == Approx(14));
+    CHECK(rig.axis(Z) == Approx(14));
+    rig.require_within_limits();
+  }
+  SECTION("Lifting: suppressed, within a_max") {
+    MachineConfig m = test::xyz_lifting_machine();
+    m.lift_min_dist_mm = 10;
+    LiftRig rig(program, m);
+    rig.start();
+    bool suppressed = false;
+    rig.run_until([&] {
+      suppressed = suppressed || rig.hli().lift_suppressed[Z];
+      return rig.done();
+    });
+    CHECK(suppressed);
+    CHECK(rig.z_peak == Approx(14));
+    CHECK(rig.largest_z_acceleration() <= m.axes[Z].a_max * (1 + 1e-6));
+    rig.require_within_limits();
+  }
+}
+
+TEST_CASE("LIFT-2 DOWN lowers instead; G91 makes POS and POS_LIMIT relative for this motion only", "[lift][channel]") {
+  LiftRig rig("N10 G01 X0 Z10 F6000\nN20 Z[LIFT_START DOWN G91 POS=-2 POS_LIMIT=-8]\nN30 X60\nN40 Z[LIFT_END]\n"
+              "N50 X70\nN60 M30\n",
+              test::xyz_lift_machine());
+  rig.start();
+  rig.run_to_end();
+  CHECK(rig.hli().channel_state == ChannelState::program_end);
+  CHECK(rig.z_floor == Approx(2).margin(1e-6));
+  CHECK(rig.axis(Z) == Approx(8));
+  rig.require_within_limits();
+}
+
+TEST_CASE("LIFT-8 Advanced Lifting accepts no higher override while it lifts", "[lift][channel]") {
+  MachineConfig m = test::xyz_lift_machine();
+  m.override_max_percent = 150;
+  LiftRig rig(cross_block, m);
+  rig.control.override.command_w = 500;  // 50 % at the start
+  rig.start();
+  rig.run_until([&] { return rig.hli().block_nr_r == 30; });
+  rig.control.override.command_w = 1500;
+  double fastest = 0;
+  rig.run_until([&] {
+    if (rig.hli().lift_active[Z]) fastest = std::max(fastest, rig.hli().path_velocity);
+    return rig.hli().block_nr_r == 70;
+  });
+  CHECK(fastest <= 100 * 0.5 + 1e-6);  // F6000 = 100 mm/s at 50 %
+  rig.run_to_end();
+  CHECK(rig.hli().path_velocity == 0);
+  rig.require_within_limits();
+}
+
+TEST_CASE("LIFT-6 DDTG-8 delete distance to go in a lift range: the lift axis lands first; skipping LIFT_END is "
+          "error 51016",
+          "[lift][channel]") {
+  SECTION("a short cut to the next block: the lift lands on POS, the path goes on") {
+    LiftRig rig(cross_block, test::xyz_lift_machine());
+    rig.start();
+    rig.run_until([&] { return rig.hli().block_nr_r == 30 && rig.axis(Z) > 20; });
+    rig.control.delete_distance_to_go.command_w = true;
+    rig.run_to_end();
+    CHECK(rig.hli().channel_state == ChannelState::program_end);
+    CHECK(rig.axis(Z) == Approx(12));
+    rig.require_within_limits();
+  }
+  SECTION("an end marker beyond LIFT_END: 51016") {
+    LiftRig rig("N10 G01 X0 Z10 F6000\nN20 Z[LIFT_START POS=12 POS_LIMIT=30]\nN30 X40\nN40 X80\nN50 Z[LIFT_END]\n"
+                "N60 #DEL DIST2GO [END=1]\nN70 X90\nN80 M30\n",
+                test::xyz_lift_machine());
+    rig.control.delete_distance_to_go_activation.command_w = 1;
+    rig.control.delete_distance_to_go_activation.enable_w = true;
+    rig.start();
+    rig.run_until([&] { return rig.hli().block_nr_r == 30 && rig.axis(Z) > 20; });
+    rig.control.delete_distance_to_go.command_w = true;
+    rig.run_to_end();
+    CHECK(rig.hli().channel_state == ChannelState::error);
+    CHECK(rig.hli().last_error_id == 51016);
+    rig.require_within_limits();
+  }
+}
