@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
@@ -336,9 +337,14 @@ void decode_nc_command(const std::string& command, DecoderState& state, Block& b
 
 void decode_axis_command(const Word& word, int axis, DecoderState& state, Block& block) {
   const AxisCommand* found = find_command(axis_commands, word.command);
-  if (!found)
+  if (!found) {
+    std::istringstream items(word.command);
+    for (std::string item; items >> item;)
+      if (find_command(axis_commands, item))  // LIFT-1: Z[POS_LIMIT=30 LIFT_START]
+        throw LineError{std::string(1, word.letter) + "[" + item + "]: " + item + " must be the first keyword"};
     throw LineError{std::string("axis command '") + word.letter + "[" + command_keyword(word.command) +
                     "]' is not supported yet"};
+  }
   found->decode(axis, arguments_after(word.command, found->keyword), state, block);
 }
 
