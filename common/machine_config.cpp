@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "config_error.hpp"
+#include "function_lists.hpp"
 #include "hli.hpp"
 
 namespace hil {
@@ -14,7 +15,8 @@ namespace {
 // The keys each mapping of a machine file may have (config/xyz_machine.yaml
 // documents them); any other is refused (ConfigMap).
 const std::vector<std::string> machine_keys = {"name", "cycle_time_us", "override_max_percent", "fb_storage_size",
-                                               "m_pre_outp", "axes"};
+                                               "m_pre_outp", "path_preparation_function", "interpolator_function",
+                                               "enable_time_based_lift", "lift_min_dist", "axes"};
 const std::vector<std::string> axis_keys = {
     "name", "v_max", "v_rapid", "a_max", "j_max", "kv", "velocity_lag_s", "velocity_loop_order",
     "velocity_damping", "velocity_feedforward", "drive_acceleration_limit", "friction_coulomb", "friction_viscous",
@@ -123,6 +125,16 @@ MachineConfig read_machine(const YAML::Node& node) {
       config.m_pre_output_mm[nr] = config_number(item.second, at, non_negative) / hli_units_per_mm;
     }
   }
+  // The lift function (TF5200_lift_function.txt 4.2): its method, and
+  // P-CHAN-00244 lift_min_dist (UNS32, 0.1 um).
+  FunctionLists lists;
+  m.get("path_preparation_function", lists.path_preparation);  // P-STUP-00060
+  m.get("interpolator_function", lists.interpolator);          // P-STUP-00070
+  m.get("enable_time_based_lift", lists.enable_time_based_lift, 0, 1);  // P-CHAN-00345
+  config.lift_method = resolve_lift_method(lists, "machine");
+  int64_t lift_min_dist = 0;
+  m.get("lift_min_dist", lift_min_dist, 0, 4294967295);
+  config.lift_min_dist_mm = static_cast<double>(lift_min_dist) / hli_units_per_mm;
   const YAML::Node axes = m["axes"];
   if (!axes || !axes.IsSequence() || axes.size() == 0) throw ConfigError("machine.axes: must be a non-empty list");
   for (size_t i = 0; i < axes.size(); ++i) {

@@ -34,8 +34,8 @@ CoordinateSystem CoordinateSystem::parse(const std::string& components, const Pa
   return cs;
 }
 
-bool CoordinateSystem::keeps_xy_plane() const {
-  return std::abs(transform_.linear()(2, 2) - 1.0) < 1e-12;
-}
+bool CoordinateSystem::keeps_xy_plane() const { return keeps_axis(2); }
+
+bool CoordinateSystem::keeps_axis(int k) const { return std::abs(transform_.linear()(k, k) - 1.0) < 1e-12; }
 
 }  // namespace hil::cnc

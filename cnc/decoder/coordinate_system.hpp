@@ -22,6 +22,9 @@ class CoordinateSystem {
   Eigen::Vector3d to_program(const Eigen::Vector3d& workpiece) const { return transform_.inverse() * workpiece; }
   // Only rotated about Z: arcs in the XY plane (G17) stay in it.
   bool keeps_xy_plane() const;
+  // Main axis k (0 X, 1 Y, 2 Z) keeps its direction: the rotation is
+  // about it only (LIFT-6: a lift axis may not be affected, error 21071).
+  bool keeps_axis(int k) const;
 
  private:
   Eigen::Isometry3d transform_ = Eigen::Isometry3d::Identity();

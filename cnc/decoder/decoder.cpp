@@ -6,6 +6,7 @@
 
 #include "decoder_state.hpp"
 #include "for_loops.hpp"
+#include "lift_commands.hpp"
 #include "line_cursor.hpp"
 #include "line_decoder.hpp"
 #include "value_ranges.hpp"
@@ -96,6 +97,7 @@ DecodedProgram decode_program(const std::string& text, const MachineConfig& mach
       break;
     }
   }
+  if (program.error) decoding::park_lift_at_error(state, program.blocks);  // LIFT-5 special case 2
   return program;
 }
 

@@ -4,6 +4,9 @@
 // (position preset), F (mm/min), M functions, M30, P<n> = expression,
 // $FOR/$ENDFOR, #DISTANCE PROG START ON|OFF|CLEAR, #SLOPE[TYPE=..], #TIME,
 // #DEL DIST2GO [END=..], #CS ON [..]/OFF, #CHANNEL INIT [CMDPOS],
+// #INSERT CMD, #CONTOUR MODE, G60/G61/G260/G261/G359/G360, the lift
+// function's <axis>[LIFT_START ..] / [LIFT_END] / [LIFT ..], #FLUSH
+// [WAIT] and V.G.LIFT_ACTIVE (docs/LIFT.md),
 // `;` and `( )` comments, `%name`. A block
 // whose axes do not move is no motion block. Anything else is an
 // error with its line number; the blocks before it are still returned, so

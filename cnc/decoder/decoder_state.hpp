@@ -1,7 +1,7 @@
 #pragma once
 // What decoding carries from one NC line to the next (KRN-1): modal G
 // codes, F and #SLOPE, the position reached, P parameters, M function
-// pre-output paths, G92 offsets and the active #CS.
+// pre-output paths, G92 offsets, the active #CS and the open lift range.
 #include <map>
 #include <optional>
 #include <utility>
@@ -27,6 +27,13 @@ struct ModalState {
   ContourMode contour;  // #CONTOUR MODE [..]
 };
 
+// A lift range that has begun and not ended (LIFT-1, LIFT-5).
+struct LiftRange {
+  LiftStart start;          // as programmed (#FLUSH changes the block's copy, not this one)
+  size_t block_index = 0;   // the block holding it among the decoded blocks
+  int64_t nc_line = 0;      // its line, for messages
+};
+
 struct DecoderState {
   DecoderState(const MachineConfig& machine_config, std::vector<double> start)
       : machine(machine_config),
@@ -41,6 +48,13 @@ struct DecoderState {
   std::vector<double> offset;          // G92: machine - program
   std::optional<CoordinateSystem> cs;  // #CS ON
   ModalState modal;
+  std::optional<LiftRange> lift;
+
+  // The V.G. variables an expression of this line reads.
+  VariableValues variables() const { return {{"V.G.LIFT_ACTIVE", lift ? 1.0 : 0.0}}; }
+  double evaluate(const std::string& expression) const {
+    return evaluate_expression(expression, parameters, variables());
+  }
 };
 
 }  // namespace hil::cnc::decoding

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lift_commands.hpp"
 #include "line_cursor.hpp"
 #include "motion_target.hpp"
 #include "nc_commands.hpp"
@@ -195,7 +196,7 @@ void assign_parameter(const std::string& code, size_t equals, DecoderState& stat
                     ") and V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm>"};
   double value = 0;
   try {
-    value = evaluate_expression(code.substr(equals + 1), state.parameters);
+    value = state.evaluate(code.substr(equals + 1));
   } catch (const std::invalid_argument& e) {
     throw LineError{e.what()};
   }
@@ -220,6 +221,7 @@ bool decode_line(const std::string& line, int64_t line_nr, int64_t lines_read, D
   if (const size_t hash = code.find('#'); hash != std::string::npos) {
     decode_command_block(code, hash, state, block);
     if (block.has_command()) out.push_back(block);
+    if (block.lift_start || block.lift_end) record_lift_block(state, out);
     return true;
   }
   if (const size_t dollar = code.find('$'); dollar != std::string::npos) throw unsupported_command(code, dollar);
@@ -227,11 +229,14 @@ bool decode_line(const std::string& line, int64_t line_nr, int64_t lines_read, D
     assign_parameter(code, equals, state);
     return true;
   }
-  const BlockWords programmed = apply_words(split_words(code), state, block);
+  const std::vector<Word> words = split_words(code);
+  const BlockWords programmed = apply_words(words, state, block);
   // G92's M functions (and M30) are the block's, as with any other block.
   if (programmed.position_preset) preset_position(programmed, state);
   else decode_motion(programmed, state, block);
+  finish_lift_block(words, programmed.axes, programmed.position_preset, state, block);
   if (block.has_motion || block.has_command()) out.push_back(block);
+  if (block.lift_start || block.lift_end) record_lift_block(state, out);
   return !block.program_end;
 }
 

@@ -53,8 +53,12 @@ void check_on_circle(const Motion& m, int x, int y) {
 
 std::vector<double> programmed_target(const std::vector<std::optional<double>>& axis_words,
                                       const DecoderState& state) {
+  return programmed_target(axis_words, state, state.modal.absolute);
+}
+
+std::vector<double> programmed_target(const std::vector<std::optional<double>>& axis_words,
+                                      const DecoderState& state, bool absolute) {
   const std::vector<double>& position = state.position;
-  const bool absolute = state.modal.absolute;
   std::vector<double> target = position;
   auto programmed = [&](double current, double word) { return absolute ? word : current + word; };
   for (size_t a = 0; a < axis_words.size(); ++a)

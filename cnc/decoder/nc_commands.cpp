@@ -9,12 +9,14 @@
 #include <cstdlib>
 #include <iterator>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <type_traits>
 #include <vector>
 
 #include "command_parameters.hpp"
+#include "lift_commands.hpp"
 #include "value_ranges.hpp"
 
 namespace hil::cnc::decoding {
@@ -85,6 +87,10 @@ void decode_distance_prog_start(const std::string& arguments, DecoderState&, Blo
 void decode_slope(const std::string& arguments, DecoderState& state, Block&) {
   const std::optional<std::string> name = key_value(without_blanks(arguments), "TYPE");
   if (!name) throw LineError{"#SLOPE needs [TYPE=STEP|TRAPEZ|SIN2]"};
+  if (*name == "HSC" && state.machine.lift_method == LiftMethod::time_based)  // LIFT-6
+    throw LineError{"#SLOPE type HSC is not supported with Advanced Lifting (P-CHAN-00345 enable_time_based_lift = 1; "
+                    "STEP, TRAPEZ, SIN2 are)",
+                    120711};
   const std::optional<SlopeType> type = parse_slope_type(*name);
   if (!type) throw LineError{"#SLOPE type '" + *name + "' is not one of STEP, TRAPEZ, SIN2"};
   state.modal.slope = *type;
@@ -123,7 +129,7 @@ void decode_del_dist2go(const std::string& arguments, DecoderState&, Block& bloc
 // #TIME <s>: dwell; an expression, so P parameters can set it.
 void decode_time(const std::string& arguments, DecoderState& state, Block& block) {
   try {
-    const double seconds = evaluate_expression(arguments, state.parameters);
+    const double seconds = state.evaluate(arguments);
     if (seconds > 0 && seconds <= max_dwell_s) {
       block.dwell_s = seconds;
       return;
@@ -151,6 +157,11 @@ std::vector<std::string> bracket_groups(const std::string& text) {
 
 // #CS ON [v1,v2,v3,φ1,φ2,φ3], #CS ON [<id>] [..], #CS OFF; one CS at a time.
 void decode_coordinate_system(const std::string& arguments, DecoderState& state, Block& block) {
+  if (state.lift)  // LIFT-6: the rotation may not change in a lift range
+    throw LineError{"#CS " + arguments.substr(0, arguments.find_first_of(" [")) + " inside the lift range of " +
+                        state.machine.axes[static_cast<size_t>(state.lift->start.axis)].name +
+                        " (LIFT_START in line " + std::to_string(state.lift->nc_line) + ") is not permitted",
+                    120606};
   block.short_cut_restriction = ShortCutRestriction::not_skippable;  // DDTG-8
   if (arguments == "OFF") {
     if (!state.cs) throw LineError{"#CS OFF without an active #CS"};
@@ -204,7 +215,7 @@ void decode_contour_mode(const std::string& arguments, DecoderState& state, Bloc
     if (key == "PATH_DEV" || key == "DIST") {
       double value = 0;
       try {
-        value = evaluate_expression(*item.value, state.parameters);
+        value = state.evaluate(*item.value);
       } catch (const std::invalid_argument& e) {
         throw LineError{"#CONTOUR MODE " + key + ": " + e.what()};
       }
@@ -232,7 +243,7 @@ int64_t insert_whole(const std::string& key, const std::string& text, const Deco
                      int64_t max) {
   double v = 0;
   try {
-    v = evaluate_expression(text, state.parameters);
+    v = state.evaluate(text);
   } catch (const std::invalid_argument&) {
     throw LineError{"#INSERT CMD " + key + "='" + text + "' is not a number"};
   }
@@ -273,7 +284,7 @@ void decode_insert_cmd(const std::string& arguments, DecoderState& state, Block&
       } else if (key == "DIST") {
         double d = 0;
         try {
-          d = evaluate_expression(value, state.parameters);
+          d = state.evaluate(value);
         } catch (const std::invalid_argument&) {
           throw LineError{"#INSERT CMD DIST='" + value + "' is not a number"};
         }
@@ -290,8 +301,10 @@ void decode_insert_cmd(const std::string& arguments, DecoderState& state, Block&
   block.insert_cmd = line;
 }
 
-// A new command is a handler above and one row here; next (KRN-1):
-// #FLUSH, #FLUSH WAIT.
+void decode_rotation(const std::string&, DecoderState& state, Block&) { refuse_rotation("#ROTATION", state); }
+void decode_trafo(const std::string&, DecoderState& state, Block&) { refuse_rotation("#TRAFO", state); }
+
+// A new command is a handler above and one row here (KRN-1).
 constexpr NcCommand nc_commands[] = {
     {"#DISTANCE PROG START", decode_distance_prog_start},
     {"#SLOPE", decode_slope},
@@ -301,12 +314,18 @@ constexpr NcCommand nc_commands[] = {
     {"#CHANNEL INIT", decode_channel_init},
     {"#INSERT CMD", decode_insert_cmd},
     {"#CONTOUR MODE", decode_contour_mode},
+    {"#FLUSH", decode_flush},
+    {"#FLUSH WAIT", decode_flush},
+    {"#ROTATION", decode_rotation},
+    {"#TRAFO", decode_trafo},
 };
 
-// None yet: Z[LIFT_START ..], Z[LIFT_END], Z[LIFT ..]
-// (TF5200_lift_function.txt). With its first row this becomes
-// `constexpr AxisCommand axis_commands[] = {...}` (a C array cannot be empty).
-constexpr std::array<AxisCommand, 0> axis_commands{};
+// The lift function (LIFT-1, lift_commands.hpp).
+constexpr AxisCommand axis_commands[] = {
+    {"LIFT_START", decode_lift_start},
+    {"LIFT_END", decode_lift_end},
+    {"LIFT", decode_lift},
+};
 
 }  // namespace
 
@@ -318,9 +337,14 @@ void decode_nc_command(const std::string& command, DecoderState& state, Block& b
 
 void decode_axis_command(const Word& word, int axis, DecoderState& state, Block& block) {
   const AxisCommand* found = find_command(axis_commands, word.command);
-  if (!found)
+  if (!found) {
+    std::istringstream items(word.command);
+    for (std::string item; items >> item;)
+      if (find_command(axis_commands, item))  // LIFT-1: Z[POS_LIMIT=30 LIFT_START]
+        throw LineError{std::string(1, word.letter) + "[" + item + "]: " + item + " must be the first keyword"};
     throw LineError{std::string("axis command '") + word.letter + "[" + command_keyword(word.command) +
                     "]' is not supported yet"};
+  }
   found->decode(axis, arguments_after(word.command, found->keyword), state, block);
 }
 

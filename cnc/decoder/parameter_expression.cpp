@@ -21,7 +21,8 @@ namespace {
 // error rather than a stack overflow.
 class Parser {
  public:
-  Parser(const std::string& text, const ParameterValues& parameters) : text_(text), parameters_(parameters) {}
+  Parser(const std::string& text, const ParameterValues& parameters, const VariableValues& variables)
+      : text_(text), parameters_(parameters), variables_(variables) {}
 
   double parse() {
     const double value = expression();
@@ -91,6 +92,7 @@ class Parser {
     }
     skip_space();
     if (pos_ < text_.size() && (text_[pos_] == 'P' || text_[pos_] == 'p')) return parameter();
+    if (pos_ < text_.size() && (text_[pos_] == 'V' || text_[pos_] == 'v')) return variable();
     return number();
   }
   double parameter() {
@@ -103,6 +105,22 @@ class Parser {
     const auto p = parameters_.find(static_cast<int>(*n));
     if (p == parameters_.end()) fail("P" + std::to_string(*n) + " has no value yet");
     return p->second;
+  }
+  // V.G.<name>: letters, digits, '_' and '.' (any case).
+  double variable() {
+    const size_t start = pos_;
+    std::string name;
+    while (pos_ < text_.size() && (std::isalnum(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '_' ||
+                                   text_[pos_] == '.'))
+      name += static_cast<char>(std::toupper(static_cast<unsigned char>(text_[pos_++])));
+    const auto v = variables_.find(name);
+    if (v == variables_.end()) {
+      std::string known;
+      for (const auto& [k, value] : variables_) known += (known.empty() ? "" : ", ") + k;
+      fail("unknown variable '" + decoding::printable(text_.substr(start, pos_ - start), 40) + "'" +
+           (known.empty() ? std::string() : " (known: " + known + ")"));
+    }
+    return v->second;
   }
   // Decimal only, [digits][.digits][e[+-]digits]: not strtod's nan, inf or 0x1p3.
   double number() {
@@ -127,6 +145,7 @@ class Parser {
 
   const std::string& text_;
   const ParameterValues& parameters_;
+  const VariableValues& variables_;
   size_t pos_ = 0;
   int depth_ = 0;
 };
@@ -134,7 +153,13 @@ class Parser {
 }  // namespace
 
 double evaluate_expression(const std::string& text, const ParameterValues& parameters) {
-  return Parser(text, parameters).parse();
+  static const VariableValues none;
+  return Parser(text, parameters, none).parse();
+}
+
+double evaluate_expression(const std::string& text, const ParameterValues& parameters,
+                           const VariableValues& variables) {
+  return Parser(text, parameters, variables).parse();
 }
 
 }  // namespace hil::cnc

@@ -98,7 +98,7 @@ TEST_CASE("KRN-2 decoder: an error names its line and block; the blocks before i
       {"N30 X1 X2", "programmed twice"},
       {"N30 G01 G02 X1", "two motion G codes"},
       {"N30 G02 X30 Y0 I5 J0", "does not lie on the circle"},
-      {"N30 #FLUSH", "'#FLUSH' is not supported yet"},
+      {"N30 #FLUSH X", "#FLUSH takes nothing but WAIT"},
       {"N30 $FOR P1=0,1,1", "$FOR without $ENDFOR"},
       {"N30 $IF P1 == 1", "'$IF' is not supported yet"},
       {"N30 $ENDFOR", "$ENDFOR without $FOR"},
@@ -149,7 +149,7 @@ TEST_CASE("KRN-1 DPS-2 decoder: #DISTANCE PROG START ON/OFF/CLEAR, G92 position 
   CHECK(p.blocks[4].distance_prog_start == DistanceProgStart::clear);
 
   for (const char* bad : {"N10 #DISTANCE PROG START\n", "N10 #SLOPE[TYPE=CUBIC]\n", "N10 G01 X1 F100 #FLUSH\n",
-                          "N10 #FLUSH WAIT\n", "N10 G92 G01 X1\n"}) {
+                          "N10 #FLUSH WAITING\n", "N10 G92 G01 X1\n"}) {
     const DecodedProgram e = decode(bad);
     REQUIRE(e.error);
     CHECK(e.error->nc_line == 1);
@@ -375,16 +375,20 @@ TEST_CASE("KRN-1 KRN-2 decoder: a command is its whole keyword; others are refus
   check_refused_as_line_3("N30 #TIMEX 5", "command '#TIMEX' is not supported yet");
   check_refused_as_line_3("N30 #DEL DIST2GOX", "command '#DEL' is not supported yet");
   check_refused_as_line_3("N30 #foo [1]", "command '#FOO' is not supported yet");
-  // Not in the table yet (KRN-1).
-  check_refused_as_line_3("N30 #FLUSH WAIT", "command '#FLUSH' is not supported yet");
+  check_refused_as_line_3("N30 #FLUSHWAIT", "command '#FLUSHWAIT' is not supported yet");
   check_refused_as_line_3("N30 #CONTOUR MODEX [DEV PATH_DEV=0.1]", "command '#CONTOUR' is not supported yet");
 }
 
-TEST_CASE("KRN-1 KRN-2 decoder: axis commands <axis>[KEYWORD ...] are refused naming the keyword", "[decoder]") {
-  // The forms of TF5200_lift_function.txt, none implemented yet.
-  check_refused_as_line_3("N30 Z[LIFT_START POS=40 POS_LIMIT=30]", "axis command 'Z[LIFT_START]' is not supported yet");
-  check_refused_as_line_3("N30 G01 X2 Y3 Z[LIFT_END]", "axis command 'Z[LIFT_END]' is not supported yet");
-  check_refused_as_line_3("N30 x2 z [ lift pos=30 pos_limit=300 ]", "axis command 'Z[LIFT]' is not supported yet");
+TEST_CASE("KRN-1 KRN-2 LIFT-1 decoder: axis commands <axis>[KEYWORD ...]; the lift forms need the lift function",
+          "[decoder]") {
+  // The forms of TF5200_lift_function.txt (tests/unit/lift_decoder_test.cpp): this machine has no lift function.
+  const std::string not_enabled =
+      ": the lift function is not enabled on this machine (FCT_LIFT_UP or FCT_LIFT_UP_TIME in P-STUP-00060 "
+      "path_preparation_function, P-CHAN-00345 enable_time_based_lift)";
+  check_refused_as_line_3("N30 Z[LIFT_START POS=40 POS_LIMIT=30]", "Z[LIFT_START]" + not_enabled);
+  check_refused_as_line_3("N30 G01 X2 Y3 Z[LIFT_END]", "Z[LIFT_END]" + not_enabled);
+  check_refused_as_line_3("N30 x2 z [ lift pos=30 pos_limit=300 ]", "Z[LIFT]" + not_enabled);
+  check_refused_as_line_3("N30 Z[LIFTX POS=40]", "axis command 'Z[LIFTX]' is not supported yet");
   check_refused_as_line_3("N30 Z[LIFT_START DOWN G91 POS_LIMIT=3", "axis command 'Z[LIFT_START' has no closing ']'");
   check_refused_as_line_3("N30 Q[LIFT_END]", "'Q[LIFT_END]': Q is not an axis of this machine");
   // An expression in brackets is no command; expressions in axis words are not supported.

@@ -15,4 +15,14 @@ inline MachineConfig xyzc_machine() {
   return parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyzc_machine.yaml"));
 }
 
+// config/xyz_machine.yaml with Advanced Lifting (LIFT-2): config/xyz_lift_machine.yaml.
+inline MachineConfig xyz_lift_machine() {
+  return parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyz_lift_machine.yaml"));
+}
+
+// ... with Lifting (path-based, LIFT-3): config/xyz_lifting_machine.yaml.
+inline MachineConfig xyz_lifting_machine() {
+  return parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyz_lifting_machine.yaml"));
+}
+
 }  // namespace hil::test
