@@ -77,6 +77,10 @@
   X(int32_t, last_error_id)   /* TF5200 ID of the last error, 0 = none */            \
   X(std::vector<std::string>, axis_name)                                             \
   X(std::vector<int64_t>, axis_position_r) /* 0.1 um, commanded position */          \
+  /* Per axis (ipo_state, LIFT-7): the axis lifts (LIFT_START .. LIFT_END); */       \
+  /* the lift is suppressed (path shorter than P-CHAN-00244, LIFT-4). */              \
+  X(std::vector<bool>, lift_active)                                                  \
+  X(std::vector<bool>, lift_suppressed)                                              \
   X(ControlUnitState, program_start)                                                 \
   X(ControlUnitState, feedhold)              /* state_r: feed hold in force */       \
   X(ControlUnitValueState, override)         /* state_r: override in force, 0.1 % */ \
