@@ -74,7 +74,8 @@ const std::vector<std::string>& expectation_keys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> own = {"when", "since", "channel_state", "block_nr_r", "block_count_r",
                                     "dist_prog_start_mm", "tolerance_mm", "delete_distance_to_go_active_r",
-                                    "axis_position_mm", "time_s_at_least", "time_s_at_most"};
+                                    "axis_position_mm", "time_s_at_least", "time_s_at_most",
+                                    "path_velocity_max_at_least_mm_s", "path_velocity_max_at_most_mm_s"};
     for (const ExtremeKey& k : extreme_keys) own.push_back(k.key);
     return with_hli_state_fields(std::move(own));
   }();
@@ -219,6 +220,10 @@ Expectation parse_expectation(const YAML::Node& node, const std::string& where) 
     else if (key == "axis_position_mm") e.axis_position_mm = axis_mm_map(item.second, m.path(key));
     else if (key == "time_s_at_least") e.time_s_at_least = m.number(key, non_negative);
     else if (key == "time_s_at_most") e.time_s_at_most = m.number(key, non_negative);
+    else if (key == "path_velocity_max_at_least_mm_s")
+      e.path_velocity_max_at_least_mm_s = m.number(key, non_negative);
+    else if (key == "path_velocity_max_at_most_mm_s")
+      e.path_velocity_max_at_most_mm_s = m.number(key, non_negative);
     else if (const ExtremeKey* extreme = find_extreme_key(key)) {
       for (const auto& [axis, mm] : axis_mm_map(item.second, m.path(key)))
         e.extremes.push_back({key, axis, extreme->highest, extreme->bound, mm});

@@ -77,6 +77,8 @@ struct Expectation {
   std::vector<ExtremeCheck> extremes;
   // The time from the window's start to the cycle `when` first held.
   std::optional<double> time_s_at_least, time_s_at_most;
+  // The largest |path_velocity| over the window, mm/s (LIFT-2, LIFT-8).
+  std::optional<double> path_velocity_max_at_least_mm_s, path_velocity_max_at_most_mm_s;
   double tolerance_mm = 0.001;
 };
 

@@ -72,6 +72,7 @@ const HliControl& ScenarioEngine::cycle(const HliState& state) {
       p.opened_cycle = state.cycle;
     }
     if (!p.opened) continue;
+    p.path_velocity_max = std::max(p.path_velocity_max, std::abs(state.path_velocity));
     for (const ExtremeCheck& x : p.expectation.extremes) {
       for (size_t i = 0; i < state.axis_name.size() && i < state.axis_position_r.size(); ++i) {
         if (state.axis_name[i] != x.axis) continue;
@@ -158,6 +159,18 @@ ExpectationResult ScenarioEngine::evaluate(const Pending& p, const HliState& s) 
   };
   if (e.time_s_at_least) check(window_s + 1e-9 >= *e.time_s_at_least, time_text(" < ", *e.time_s_at_least));
   if (e.time_s_at_most) check(window_s <= *e.time_s_at_most + 1e-9, time_text(" > ", *e.time_s_at_most));
+  auto velocity_text = [&](const char* relation, double bound) {
+    std::ostringstream out;
+    out << "path_velocity up to " << p.path_velocity_max << " mm/s" << relation << bound << " mm/s";
+    return out.str();
+  };
+  // 1e-9 relative: round-off, not a tolerance.
+  if (e.path_velocity_max_at_least_mm_s)
+    check(p.path_velocity_max >= *e.path_velocity_max_at_least_mm_s * (1 - 1e-9),
+          velocity_text(" < ", *e.path_velocity_max_at_least_mm_s));
+  if (e.path_velocity_max_at_most_mm_s)
+    check(p.path_velocity_max <= *e.path_velocity_max_at_most_mm_s * (1 + 1e-9),
+          velocity_text(" > ", *e.path_velocity_max_at_most_mm_s));
   r.detail = failures.str();
   r.passed = r.detail.empty();
   if (r.passed) r.detail = " all checks hold";

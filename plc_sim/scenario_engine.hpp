@@ -40,6 +40,7 @@ class ScenarioEngine {
     bool opened = false;  // the window began (`since` held, or no `since`)
     int64_t opened_cycle = 0;
     std::map<std::string, Extremes> extremes;  // by axis, over the window
+    double path_velocity_max = 0;              // |path_velocity|, over the window
     bool reached = false;
     ExpectationResult result;
   };

@@ -380,3 +380,31 @@ expect:
   CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    time_s_at_most: -1\n"),
                     Catch::Contains("expect[0].time_s_at_most"));
 }
+
+TEST_CASE("LIFT-2 LIFT-8 RIG-5 scenario: the largest path velocity over a window", "[scenario][lift]") {
+  const Scenario s = lift_scenario(R"(
+expect:
+  - since: {lift_active: {Z: true}}
+    when: {lift_active: {Z: false}}
+    path_velocity_max_at_most_mm_s: 20
+  - when: program_end
+    path_velocity_max_at_most_mm_s: 20
+    path_velocity_max_at_least_mm_s: 50
+)");
+  plc::ScenarioEngine engine(s);
+  const double v[] = {50, 30, 20, 10, 15, 0};  // the lift in cycles 2 .. 3, the window 2 .. 4
+  const bool lift[] = {false, false, true, true, false, false};
+  for (int k = 0; k < 6; ++k) {
+    HliState st = xz_state(k, 0, lift[k], k == 5 ? ChannelState::program_end : ChannelState::active);
+    st.path_velocity = k == 1 ? -v[k] : v[k];  // backward motion counts by its magnitude
+    engine.cycle(st);
+  }
+  const auto results = engine.finish();
+  REQUIRE(results.size() == 2);
+  CHECK(results[0].passed);  // 20, 10, 15 in the window; 50 and 30 before it
+  CHECK_FALSE(results[1].passed);
+  CHECK_THAT(results[1].detail, Catch::Contains("path_velocity up to 50 mm/s > 20 mm/s"));
+  CHECK_THAT(results[1].detail, !Catch::Contains(" < 50"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    path_velocity_max_at_most_mm_s: -1\n"),
+                    Catch::Contains("expect[0].path_velocity_max_at_most_mm_s"));
+}
