@@ -130,6 +130,29 @@ std::string hli_field_names() {
   return names;
 }
 
+const std::vector<HliAxisFlag>& hli_axis_flags() {
+  static const std::vector<HliAxisFlag> flags = [] {
+    std::vector<HliAxisFlag> out;
+    HliState::fields([&](const char* name, auto member) {
+      if constexpr (std::is_same_v<member_t<decltype(member)>, std::vector<bool>>)
+        out.push_back({name, [member](const HliState& s, const std::string& axis) -> std::optional<bool> {
+                         const std::vector<bool>& values = s.*member;
+                         for (size_t i = 0; i < s.axis_name.size() && i < values.size(); ++i)
+                           if (s.axis_name[i] == axis) return values[i];
+                         return std::nullopt;
+                       }});
+    });
+    return out;
+  }();
+  return flags;
+}
+
+const HliAxisFlag* find_hli_axis_flag(const std::string& name) {
+  for (const HliAxisFlag& flag : hli_axis_flags())
+    if (flag.name == name) return &flag;
+  return nullptr;
+}
+
 // The two records that have names.
 #define HIL_NAMED(Record)                                                                        \
   template struct HliField<Record>;                                                              \

@@ -43,4 +43,15 @@ bool write_hli_field(Record& record, const std::string& name, int64_t value);
 template <typename Record>
 std::string hli_field_names();
 
+// The per-axis BOOL arrays of HliState by name (lift_active,
+// lift_suppressed, LIFT-7): every std::vector<bool> of the table. A
+// scenario names the axis: `lift_active: {Z: true}`.
+struct HliAxisFlag {
+  std::string name;
+  // The axis' value, none if the state has no such axis.
+  std::function<std::optional<bool>(const HliState&, const std::string& axis)> read;
+};
+const std::vector<HliAxisFlag>& hli_axis_flags();
+const HliAxisFlag* find_hli_axis_flag(const std::string& name);
+
 }  // namespace hil

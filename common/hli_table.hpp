@@ -3,12 +3,14 @@
 //  - name: the TF5200 name, the member of HliControl / HliState (hli.hpp)
 //    and of the LCM type (lcmtypes/hli_control_t.lcm, hli_state_t.lcm);
 //  - type: the type the TF5200 texts give it: BOOL bool, DINT int32_t,
-//    UDINT uint32_t (an int64_t in the .lcm: LCM has no unsigned types).
+//    UDINT uint32_t (an int64_t in the .lcm: LCM has no unsigned types);
+//    a per-axis BOOL (gpAx[axis_idx]^...) std::vector<bool>, in the .lcm
+//    boolean[n_axes].
 // From these lists come the members, the LCM conversion
 // (lcm_support/messages.cpp, checked at compile time against the .lcm) and
 // the names scenarios read and write (hli_names.hpp: "unit.command_w", every
-// BOOL / DINT / UDINT / LINT field). docs/ARCHITECTURE.md ("The HLI table")
-// says how to add a control unit.
+// BOOL / DINT / UDINT / LINT field; a per-axis BOOL by axis name).
+// docs/ARCHITECTURE.md ("The HLI table") says how to add a control unit.
 
 // A control unit as the PLC writes it (MC_CONTROL_*_UNIT; Command is its
 // command_w's type) and as the CNC answers it (State: state_r's type).
@@ -77,6 +79,10 @@
   X(int32_t, last_error_id)   /* TF5200 ID of the last error, 0 = none */            \
   X(std::vector<std::string>, axis_name)                                             \
   X(std::vector<int64_t>, axis_position_r) /* 0.1 um, commanded position */          \
+  /* Per axis (ipo_state, LIFT-7): the axis lifts (LIFT_START .. LIFT_END); */       \
+  /* the lift is suppressed (path shorter than P-CHAN-00244, LIFT-4). */              \
+  X(std::vector<bool>, lift_active)                                                  \
+  X(std::vector<bool>, lift_suppressed)                                              \
   X(ControlUnitState, program_start)                                                 \
   X(ControlUnitState, feedhold)              /* state_r: feed hold in force */       \
   X(ControlUnitValueState, override)         /* state_r: override in force, 0.1 % */ \

@@ -37,16 +37,48 @@ std::vector<std::string> with_hli_fields(std::vector<std::string> keys) {
     if (std::find(keys.begin(), keys.end(), field.name) == keys.end()) keys.push_back(field.name);
   return keys;
 }
+// ... and the per-axis BOOL arrays (lift_active: {Z: true}).
+std::vector<std::string> with_hli_state_fields(std::vector<std::string> keys) {
+  keys = with_hli_fields<HliState>(std::move(keys));
+  for (const HliAxisFlag& flag : hli_axis_flags()) keys.push_back(flag.name);
+  return keys;
+}
 const std::vector<std::string>& condition_keys() {
-  static const std::vector<std::string> keys = with_hli_fields<HliState>(
+  static const std::vector<std::string> keys = with_hli_state_fields(
       {"cycle", "time_s", "block_nr_r", "block_count_r", "dist_prog_start_mm", "channel_state",
        "delete_distance_to_go_active_r", "m_function_nr_r"});
   return keys;
 }
+
+// The bounds on an axis' extremes over an expectation's window.
+struct ExtremeKey {
+  const char* key;
+  bool highest;
+  ExtremeCheck::Bound bound;
+};
+constexpr ExtremeKey extreme_keys[] = {
+    {"axis_max_mm", true, ExtremeCheck::Bound::equal},
+    {"axis_max_at_least_mm", true, ExtremeCheck::Bound::at_least},
+    {"axis_max_at_most_mm", true, ExtremeCheck::Bound::at_most},
+    {"axis_min_mm", false, ExtremeCheck::Bound::equal},
+    {"axis_min_at_least_mm", false, ExtremeCheck::Bound::at_least},
+    {"axis_min_at_most_mm", false, ExtremeCheck::Bound::at_most},
+};
+const ExtremeKey* find_extreme_key(const std::string& key) {
+  for (const ExtremeKey& k : extreme_keys)
+    if (key == k.key) return &k;
+  return nullptr;
+}
+
 const std::vector<std::string>& expectation_keys() {
-  static const std::vector<std::string> keys = with_hli_fields<HliState>(
-      {"when", "channel_state", "block_nr_r", "block_count_r", "dist_prog_start_mm", "tolerance_mm",
-       "delete_distance_to_go_active_r", "axis_position_mm"});
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> own = {"when", "since", "channel_state", "block_nr_r", "block_count_r",
+                                    "dist_prog_start_mm", "tolerance_mm", "delete_distance_to_go_active_r",
+                                    "axis_position_mm", "time_s_at_least", "time_s_at_most",
+                                    "path_velocity_max_at_least_mm_s", "path_velocity_max_at_most_mm_s"};
+    for (const ExtremeKey& k : extreme_keys) own.push_back(k.key);
+    return with_hli_state_fields(std::move(own));
+  }();
   return keys;
 }
 const std::vector<std::string>& control_keys() {
@@ -106,6 +138,27 @@ int64_t hli_field_value(const std::string& key, const YAML::Node& node, const st
   return value;
 }
 
+// A map of axis names to values, `{Z: 30}`; each axis once.
+template <typename Value, typename Parse>
+std::map<std::string, Value> axis_map(const YAML::Node& node, const std::string& where, const char* what,
+                                      Parse parse) {
+  if (!node.IsMap()) throw ConfigError(where + ": must map axis names to " + what);
+  std::map<std::string, Value> out;
+  for (const auto& axis : node) {
+    const std::string name = config_text(axis.first, where);
+    if (out.count(name)) throw ConfigError(key_path(where, name) + ": given twice");
+    out[name] = parse(axis.second, key_path(where, name));
+  }
+  return out;
+}
+std::map<std::string, bool> axis_flag_map(const YAML::Node& node, const std::string& where) {
+  return axis_map<bool>(node, where, "true or false", config_bool);
+}
+std::map<std::string, double> axis_mm_map(const YAML::Node& node, const std::string& where) {
+  return axis_map<double>(node, where, "positions in mm",
+                          [](const YAML::Node& n, const std::string& w) { return config_number(n, w); });
+}
+
 // Block numbers (N) and program lines: UDINT in the TF5200 texts, kept in 64 bits.
 int64_t block_number(const ConfigMap& m, const std::string& key) { return m.whole(key, 0, int64_max); }
 
@@ -128,6 +181,7 @@ Condition parse_condition(const YAML::Node& node, const std::string& where) {
     else if (key == "delete_distance_to_go_active_r")
       c.delete_distance_to_go_active_r = config_bool(item.second, m.path(key));
     else if (key == "m_function_nr_r") c.m_function_nr_r = static_cast<int32_t>(m.whole(key, 0, int32_max));
+    else if (find_hli_axis_flag(key)) c.axis_flags[key] = axis_flag_map(item.second, m.path(key));
     else c.fields[key] = hli_field_value<HliState>(key, item.second, where);
   }
   return c;
@@ -152,9 +206,10 @@ Expectation parse_expectation(const YAML::Node& node, const std::string& where) 
   Expectation e;
   if (!m.has("when")) throw ConfigError(where + ": 'when' is missing");
   e.when = parse_condition(m["when"], m.path("when"));
+  if (m.has("since")) e.since = parse_condition(m["since"], m.path("since"));
   for (const auto& item : node) {
     const std::string key = item.first.Scalar();
-    if (key == "when") continue;
+    if (key == "when" || key == "since") continue;
     if (key == "channel_state") e.channel_state = channel_state_of(item.second, m.path(key));
     else if (key == "block_nr_r") e.block_nr_r = block_number(m, key);
     else if (key == "block_count_r") e.block_count_r = block_number(m, key);
@@ -162,17 +217,25 @@ Expectation parse_expectation(const YAML::Node& node, const std::string& where) 
     else if (key == "tolerance_mm") e.tolerance_mm = m.number(key, non_negative);
     else if (key == "delete_distance_to_go_active_r")
       e.delete_distance_to_go_active_r = config_bool(item.second, m.path(key));
-    else if (key == "axis_position_mm") {
-      if (!item.second.IsMap()) throw ConfigError(m.path(key) + ": must map axis names to positions in mm");
-      for (const auto& axis : item.second) {
-        const std::string name = config_text(axis.first, m.path(key));
-        if (e.axis_position_mm.count(name)) throw ConfigError(key_path(m.path(key), name) + ": given twice");
-        e.axis_position_mm[name] = config_number(axis.second, key_path(m.path(key), name));
-      }
+    else if (key == "axis_position_mm") e.axis_position_mm = axis_mm_map(item.second, m.path(key));
+    else if (key == "time_s_at_least") e.time_s_at_least = m.number(key, non_negative);
+    else if (key == "time_s_at_most") e.time_s_at_most = m.number(key, non_negative);
+    else if (key == "path_velocity_max_at_least_mm_s")
+      e.path_velocity_max_at_least_mm_s = m.number(key, non_negative);
+    else if (key == "path_velocity_max_at_most_mm_s")
+      e.path_velocity_max_at_most_mm_s = m.number(key, non_negative);
+    else if (const ExtremeKey* extreme = find_extreme_key(key)) {
+      for (const auto& [axis, mm] : axis_mm_map(item.second, m.path(key)))
+        e.extremes.push_back({key, axis, extreme->highest, extreme->bound, mm});
+    } else if (find_hli_axis_flag(key)) {
+      e.axis_flags[key] = axis_flag_map(item.second, m.path(key));
     } else {
       e.fields[key] = hli_field_value<HliState>(key, item.second, where);
     }
   }
+  // A window no time fits is a mistake in the file, not a check.
+  if (e.time_s_at_least && e.time_s_at_most && *e.time_s_at_least > *e.time_s_at_most)
+    throw ConfigError(where + ": time_s_at_least is more than time_s_at_most");
   return e;
 }
 
@@ -229,6 +292,11 @@ bool Condition::holds(const HliState& s, double cycle_time_s) const {
   if (m_function_nr_r && !(s.m_function_request_r && s.m_function_nr_r == *m_function_nr_r)) return false;
   for (const auto& [name, value] : fields)
     if (read_hli_field(s, name) != value) return false;
+  for (const auto& [name, axes] : axis_flags) {
+    const HliAxisFlag* flag = find_hli_axis_flag(name);
+    for (const auto& [axis, value] : axes)
+      if (!flag || flag->read(s, axis) != value) return false;
+  }
   return true;
 }
 
@@ -245,6 +313,8 @@ std::string Condition::describe() const {
     out << sep << "delete_distance_to_go_active_r=" << (*delete_distance_to_go_active_r ? "true" : "false"), sep = " ";
   if (m_function_nr_r) out << sep << "m_function_nr_r=" << *m_function_nr_r, sep = " ";
   for (const auto& [name, value] : fields) out << sep << name << "=" << value, sep = " ";
+  for (const auto& [name, axes] : axis_flags)
+    for (const auto& [axis, value] : axes) out << sep << name << "." << axis << "=" << (value ? "true" : "false"), sep = " ";
   return out.str();
 }
 
@@ -304,10 +374,25 @@ Scenario read_scenario(const YAML::Node& root, const MachineConfig* machine) {
   for (const auto& v : s.expected_violations)
     if (s.machine.axis_index(v.axis) < 0)
       throw ConfigError("expect_violations: axis '" + v.axis + "' is not on the machine");
-  for (const auto& e : s.expectations)
-    for (const auto& axis : e.axis_position_mm)
-      if (s.machine.axis_index(axis.first) < 0)
-        throw ConfigError("expect: axis '" + axis.first + "' is not on the machine");
+  auto on_machine = [&](const std::string& axis, const std::string& where) {
+    if (s.machine.axis_index(axis) < 0) throw ConfigError(where + ": axis '" + axis + "' is not on the machine");
+  };
+  auto flags_on_machine = [&](const std::map<std::string, std::map<std::string, bool>>& flags,
+                              const std::string& where) {
+    for (const auto& [name, axes] : flags)
+      for (const auto& axis : axes) on_machine(axis.first, where + "." + name);
+  };
+  for (size_t i = 0; i < s.timeline.size(); ++i)
+    flags_on_machine(s.timeline[i].when.axis_flags, index_path("plc.timeline", i) + ".when");
+  for (size_t i = 0; i < s.expectations.size(); ++i) {
+    const Expectation& e = s.expectations[i];
+    const std::string where = index_path("expect", i);
+    for (const auto& axis : e.axis_position_mm) on_machine(axis.first, where + ".axis_position_mm");
+    for (const ExtremeCheck& x : e.extremes) on_machine(x.axis, where + "." + x.key);
+    flags_on_machine(e.when.axis_flags, where + ".when");
+    if (e.since) flags_on_machine(e.since->axis_flags, where + ".since");
+    flags_on_machine(e.axis_flags, where);
+  }
   s.resolved = root;
   return s;
 }

@@ -28,6 +28,8 @@ struct Condition {
   std::optional<int32_t> m_function_nr_r;     // this M function waits for acknowledgement
   // Other HLI state fields by name (hli_names.hpp), == value.
   std::map<std::string, int64_t> fields;
+  // Per-axis BOOL arrays by name, per axis: {"lift_active": {"Z": true}}.
+  std::map<std::string, std::map<std::string, bool>> axis_flags;
 
   bool holds(const HliState& state, double cycle_time_s) const;
   std::string describe() const;
@@ -46,9 +48,24 @@ struct TimelineStep {
   std::vector<ControlWrite> set;
 };
 
-// Checks on the HLI state at the moment `when` first holds.
+// A bound on an axis' highest (axis_max_*) or lowest (axis_min_*)
+// commanded position over an expectation's window.
+struct ExtremeCheck {
+  enum class Bound { equal, at_least, at_most };
+  std::string key;  // "axis_max_mm", "axis_min_at_most_mm", ...
+  std::string axis;
+  bool highest = true;
+  Bound bound = Bound::equal;
+  double mm = 0;
+};
+
+// Checks on the HLI state at the moment `when` first holds. With `since`,
+// the expectation has a window: from the first cycle `since` holds on
+// (without: from the run's start), `when` is looked for from there; the
+// extremes and the time are taken over that window.
 struct Expectation {
   Condition when;
+  std::optional<Condition> since;
   std::optional<ChannelState> channel_state;
   std::optional<int64_t> block_nr_r;
   std::optional<int64_t> block_count_r;
@@ -56,6 +73,12 @@ struct Expectation {
   std::optional<bool> delete_distance_to_go_active_r;
   std::map<std::string, double> axis_position_mm;
   std::map<std::string, int64_t> fields;  // other HLI state fields (hli_names.hpp)
+  std::map<std::string, std::map<std::string, bool>> axis_flags;  // lift_active: {Z: true}
+  std::vector<ExtremeCheck> extremes;
+  // The time from the window's start to the cycle `when` first held.
+  std::optional<double> time_s_at_least, time_s_at_most;
+  // The largest |path_velocity| over the window, mm/s (LIFT-2, LIFT-8).
+  std::optional<double> path_velocity_max_at_least_mm_s, path_velocity_max_at_most_mm_s;
   double tolerance_mm = 0.001;
 };
 

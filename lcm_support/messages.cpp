@@ -3,6 +3,7 @@
 #include <iterator>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 namespace hil::lcm_support {
 namespace {
@@ -19,10 +20,21 @@ constexpr bool holds_every_value() {
   else return std::is_same_v<From, To>;
 }
 
-// LCM arrays carry their length in a field of their own.
+template <typename T>
+struct is_vector : std::false_type {};
+template <typename T>
+struct is_vector<std::vector<T>> : std::true_type {};
+
+// LCM arrays carry their length in a field of their own; the per-axis
+// arrays all have n_axes elements (LCM would encode past a shorter one).
 template <typename Message>
 void set_lengths(Message&) {}
-void set_lengths(hil::hli_state_t& m) { m.n_axes = static_cast<int16_t>(m.axis_name.size()); }
+void set_lengths(hil::hli_state_t& m) {
+  m.n_axes = static_cast<int16_t>(m.axis_name.size());
+  m.axis_position_r.resize(m.axis_name.size());
+  m.lift_active.resize(m.axis_name.size());
+  m.lift_suppressed.resize(m.axis_name.size());
+}
 
 // Copies a record of the table (hli_table.hpp) to its LCM twin or back,
 // member by member, by name; records within recurse.
@@ -33,6 +45,14 @@ void copy(const From& from, To& to) {
     set_lengths(to);
   } else if constexpr (is_record_v<To>) {
     To::template fields<From>([&](const char*, auto record, auto twin) { copy(from.*twin, to.*record); });
+  } else if constexpr (is_vector<From>::value && is_vector<To>::value &&
+                       !std::is_same_v<From, To>) {  // std::vector<bool> <-> LCM boolean[] (int8_t)
+    to.resize(from.size());
+    for (size_t i = 0; i < from.size(); ++i) {
+      typename To::value_type element{};
+      copy(static_cast<typename From::value_type>(from[i]), element);
+      to[i] = element;
+    }
   } else if constexpr (std::is_array_v<From> || std::is_array_v<To>) {  // std::array <-> a fixed LCM array
     static_assert(std::size(From{}) == std::size(To{}), "an HLI array and its LCM twin must have one length");
     for (size_t i = 0; i < std::size(from); ++i) copy(from[i], to[i]);

@@ -7,7 +7,8 @@
 namespace hil::logger {
 
 LimitChecker::LimitChecker(const MachineConfig& machine)
-    : machine_(machine), setpoints_(machine.axes.size()), summary_(machine.axes.size()) {
+    : machine_(machine), setpoints_(machine.axes.size()), lift_active_(machine.axes.size()),
+      summary_(machine.axes.size()) {
   for (size_t i = 0; i < machine.axes.size(); ++i) {
     const AxisConfig& a = machine.axes[i];
     AxisSummary& s = summary_[i];
@@ -18,6 +19,19 @@ LimitChecker::LimitChecker(const MachineConfig& machine)
     s.a_err_limit = a.accel_error_limit();
     s.v_err_limit = a.velocity_error_limit();
     s.slep_max = a.slep_max;
+    s.j_lift_limit = a.j_max * std::max(1.0, a.dyn_monitoring_a_err / 1000.0);
+  }
+}
+
+void LimitChecker::add_lift_active(int axis, int64_t cycle) {
+  if (lift_active_[axis].insert(cycle).second) ++summary_[axis].lift_cycles;
+}
+
+void LimitChecker::add_hli_state(const HliState& state) {
+  for (size_t i = 0; i < state.axis_name.size() && i < state.lift_active.size(); ++i) {
+    if (!state.lift_active[i]) continue;
+    const int axis = machine_.axis_index(state.axis_name[i]);
+    if (axis >= 0) add_lift_active(axis, state.cycle);
   }
 }
 
@@ -100,6 +114,17 @@ CheckReport LimitChecker::finish() const {
     // Differences only across consecutive cycles; a gap restarts them.
     double v1 = 0, a1 = 0;
     int run = 0;  // consecutive samples so far
+    // A difference is in the lift's overload range if a cycle it spans
+    // showed lift_active: the k-th difference at cycle c mixes the motion
+    // of cycles c-k .. c.
+    const std::unordered_set<int64_t>& lift = lift_active_[i];
+    auto lifting = [&](int64_t cycle, int back) {
+      if (lift.empty()) return false;
+      for (int b = 0; b <= back; ++b)
+        if (lift.count(cycle - b)) return true;
+      return false;
+    };
+    const AxisConfig& axis = machine_.axes[i];
     for (size_t k = 0; k < t.position.size(); ++k) {
       if (!std::isfinite(t.position[k])) {
         record(report.violations, t.position[k], 0, t.cycle[k], s.axis, "commanded position (not finite)");
@@ -117,11 +142,19 @@ CheckReport LimitChecker::finish() const {
       check(report.violations, s.cmd_v, v, s.v_max, t.cycle[k], s.axis, "commanded velocity", noise[1]);
       if (run >= 3) {
         const double a = (v - v1) / dt;
-        check(report.violations, s.cmd_a, a, s.a_max, t.cycle[k], s.axis, "commanded acceleration",
-              noise[2]);
-        if (run >= 4)
-          check(report.violations, s.cmd_j, (a - a1) / dt, s.j_max, t.cycle[k], s.axis, "commanded jerk",
-                noise[3]);
+        if (lifting(t.cycle[k], 2))
+          check(report.violations, s.cmd_a_lift, a, axis.accel_error_limit(), t.cycle[k], s.axis,
+                "commanded acceleration (lift overload range, P-AXIS-00442)", noise[2]);
+        else
+          check(report.violations, s.cmd_a, a, s.a_max, t.cycle[k], s.axis, "commanded acceleration", noise[2]);
+        if (run >= 4) {
+          const double j = (a - a1) / dt;
+          if (lifting(t.cycle[k], 3))
+            check(report.violations, s.cmd_j_lift, j, s.j_lift_limit, t.cycle[k], s.axis,
+                  "commanded jerk (lift overload range, P-AXIS-00442)", noise[3]);
+          else
+            check(report.violations, s.cmd_j, j, s.j_max, t.cycle[k], s.axis, "commanded jerk", noise[3]);
+        }
         a1 = a;
       }
       v1 = v;

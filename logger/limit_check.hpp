@@ -6,8 +6,10 @@
 // maximum, and the check does not trust what the CNC says of itself.
 #include <cstdint>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
+#include "hli.hpp"
 #include "machine_config.hpp"
 
 namespace hil::logger {
@@ -27,11 +29,17 @@ struct Violation {
 
 struct AxisSummary {
   std::string axis;
-  double cmd_v = 0, cmd_a = 0, cmd_j = 0;  // max |.| of the commanded motion
+  double cmd_v = 0, cmd_a = 0, cmd_j = 0;  // max |.| of the commanded motion (a, j: outside the lift's range)
   double act_v = 0, act_a = 0;             // max |.| of the actual motion
   double following_error = 0;              // max |.|
   double v_max = 0, a_max = 0, j_max = 0, a_err_limit = 0, v_err_limit = 0, slep_max = 0;
   int64_t setpoints = 0, states = 0;       // samples seen
+  // The lift's overload range (LIFT-2): max |commanded a| and |j| of the
+  // differences that span a cycle with lift_active, the jerk limit there
+  // (j_max * max(1, P-AXIS-00442 / 1000); a's is a_err_limit), and how
+  // many cycles the HLI showed lift_active.
+  double cmd_a_lift = 0, cmd_j_lift = 0, j_lift_limit = 0;
+  int64_t lift_cycles = 0;
 };
 
 struct CheckReport {
@@ -48,6 +56,12 @@ class LimitChecker {
   void add_setpoint(int axis, int64_t cycle, double position);
   void add_actual(int axis, int64_t cycle, double position, double velocity, double acceleration,
                   double following_error);
+  // The HLI state of a cycle (LIFT-7): in a cycle with lift_active for an
+  // axis, its commanded acceleration may reach P-AXIS-00442's limit and its
+  // jerk j_max * max(1, P-AXIS-00442 / 1000) (TF5200 plans the lift axis in
+  // this overload range); its velocity stays within v_max. Axes by name.
+  void add_lift_active(int axis, int64_t cycle);
+  void add_hli_state(const HliState& state);
   CheckReport finish() const;
 
  private:
@@ -66,6 +80,7 @@ class LimitChecker {
 
   MachineConfig machine_;
   std::vector<Trace> setpoints_;
+  std::vector<std::unordered_set<int64_t>> lift_active_;  // per axis: the cycles with lift_active
   mutable std::vector<AxisSummary> summary_;
   std::vector<Violation> actual_violations_;
 };

@@ -1,6 +1,7 @@
 #pragma once
 // The PLC simulator's program (RIG-5): runs a scenario's timeline against
 // the HLI, cycle by cycle, and checks its expectations.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,12 +30,21 @@ class ScenarioEngine {
   std::vector<ExpectationResult> finish() const;
 
  private:
+  // An axis' highest and lowest commanded position over a window.
+  struct Extremes {
+    double highest = 0, lowest = 0;
+    bool seen = false;
+  };
   struct Pending {
     Expectation expectation;
+    bool opened = false;  // the window began (`since` held, or no `since`)
+    int64_t opened_cycle = 0;
+    std::map<std::string, Extremes> extremes;  // by axis, over the window
+    double path_velocity_max = 0;              // |path_velocity|, over the window
     bool reached = false;
     ExpectationResult result;
   };
-  ExpectationResult evaluate(const Expectation& e, const HliState& state) const;
+  ExpectationResult evaluate(const Pending& p, const HliState& state) const;
 
   std::vector<TimelineStep> timeline_;
   std::vector<bool> fired_;

@@ -25,6 +25,8 @@ std::string format_check(const logger::RunLog& log, const logger::CheckReport& r
   std::ostringstream out;
   // Per axis: the largest value of each quantity, its limit and the margin
   // left (negative: the limit was exceeded).
+  bool lifted = false;  // any axis: then every axis shows its lift rows (LIFT-2)
+  for (const auto& a : report.axes) lifted = lifted || a.lift_cycles > 0;
   for (const auto& a : report.axes) {
     char head[160];
     std::snprintf(head, sizeof head, "axis %-37s %12s %12s %10s\n", a.axis.c_str(), "max", "limit", "margin");
@@ -48,6 +50,15 @@ std::string format_check(const logger::RunLog& log, const logger::CheckReport& r
     row("actual |v| [" + u + "/s] / P-AXIS-00440", a.act_v, a.v_err_limit);
     row("actual |a| [" + u + "/s^2] / P-AXIS-00442", a.act_a, a.a_err_limit);
     row("|following error| [" + u + "] / P-AXIS-00168", a.following_error, a.slep_max);
+    if (!lifted) continue;
+    // The lift's overload range: TF5200 plans the lift axis up to P-AXIS-00442.
+    row("lifting |a| [" + u + "/s^2] / P-AXIS-00442", a.cmd_a_lift, a.a_err_limit);
+    row("lifting |j| [" + u + "/s^3] / j_max*00442/1000", a.cmd_j_lift, a.j_lift_limit);
+    char note[200];
+    std::snprintf(note, sizeof note, "  lift_active %lld cycles: commanded |a| up to %.2f a_max%s\n",
+                  static_cast<long long>(a.lift_cycles), a.a_max > 0 ? a.cmd_a_lift / a.a_max : 0.0,
+                  a.cmd_a_lift > a.a_max * (1 + logger::limit_tolerance) ? " (the overload range above a_max)" : "");
+    out << note;
   }
   int64_t violating_cycles = 0;
   for (const auto& v : report.violations) violating_cycles += v.cycles;

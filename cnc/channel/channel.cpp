@@ -14,6 +14,8 @@ Channel::Channel(MachineConfig machine, std::string nc_program)
       lift_(machine_), setpoints_(path_.setpoints()) {
   for (const AxisConfig& axis : machine_.axes) hli_.axis_name.push_back(axis.name);
   hli_.axis_position_r.assign(machine_.axes.size(), 0);
+  hli_.lift_active.assign(machine_.axes.size(), false);
+  hli_.lift_suppressed.assign(machine_.axes.size(), false);
   hli_.stop_conditions_r = stop_condition::ipo_input_empty;
   hli_.override.state_r = override_full;
 }

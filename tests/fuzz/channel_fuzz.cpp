@@ -215,6 +215,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     check_events(k);
 
     double chord_sq = 0;
+    checker.add_hli_state(s);  // lift_active: the lift's overload range (LIFT-2)
     for (size_t i = 0; i < axes; ++i) {
       checker.add_setpoint(static_cast<int>(i), k, sp[i].position);
       if (!finite(sp[i].position) || !finite(sp[i].velocity) || !finite(sp[i].acceleration))

@@ -15,7 +15,9 @@
 //  - each axis' commanded velocity, acceleration and jerk, as finite
 //    differences of the commanded positions per cycle, within v_max, a_max,
 //    j_max: logger::LimitChecker (RIG-4's offline check) fed every cycle's
-//    setpoints. Its only slack is round-off: relative 1e-6 of the limit plus
+//    setpoints and HLI state (in cycles with lift_active an axis may use
+//    the lift's overload range, LIFT-2: a up to P-AXIS-00442's limit, j up
+//    to j_max * max(1, P-AXIS-00442 / 1000)). Its only slack is round-off: relative 1e-6 of the limit plus
 //    2^n ulp / T^n for the n-th difference. No allowance for discretisation
 //    is needed: the n-th difference of a sampled motion is a weighted mean
 //    of its n-th derivative, so it never exceeds the true maximum;

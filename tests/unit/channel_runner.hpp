@@ -26,9 +26,11 @@ inline int64_t run_program(cnc::Channel& channel, logger::LimitChecker* checker 
   int64_t k = first_cycle;
   for (; k < first_cycle + max_cycles; ++k) {
     channel.step(k, control);
-    if (checker)
+    if (checker) {
+      checker->add_hli_state(channel.hli());  // lift_active: the lift's overload range (LIFT-2)
       for (size_t i = 0; i < channel.setpoints().size(); ++i)
         checker->add_setpoint(static_cast<int>(i), k, channel.setpoints()[i].position);
+    }
     if (channel.finished()) return k + 1;
     control.program_start.command_w = false;
     if (plc) plc(k, channel.hli(), control);

@@ -2,6 +2,7 @@
 // and limit, and reports per-axis maxima.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -133,4 +134,93 @@ TEST_CASE("RIG-4 limit check: a position, velocity or acceleration that is not f
   // The finite samples around the NaN stay clean: no velocity or jerk spike from it.
   CHECK(seen.count("X commanded velocity") == 0);
   CHECK(r.axes[0].cmd_v == 0);
+}
+
+namespace {
+
+// Z (a_max 1500, P-AXIS-00442 2000: 3000 mm/s^2) rest to rest in 200 cycles
+// with a = a0 sin(w t) from cycle 50 on; lift_active (LIFT-7) in
+// `lift_from` .. `lift_to`. v_max 250 and j_max 60000 for the test.
+CheckReport lift_motion(double a0, int64_t lift_from, int64_t lift_to, bool by_hli_state = false) {
+  MachineConfig m = test::xyz_machine();
+  m.axes[2].v_max = 250;
+  m.axes[2].j_max = 60000;
+  LimitChecker checker(m);
+  const double dt = m.cycle_time_s(), w = 2 * M_PI / (200 * dt);
+  for (int64_t k = 0; k < 400; ++k) {
+    const double t = std::clamp<double>(static_cast<double>(k - 50), 0, 200) * dt;
+    checker.add_setpoint(2, k, a0 / w * (t - std::sin(w * t) / w));
+    if (k < lift_from || k > lift_to) continue;
+    if (!by_hli_state) {
+      checker.add_lift_active(2, k);
+      continue;
+    }
+    HliState s;  // the HLI names the axes: order does not matter
+    s.cycle = k;
+    s.axis_name = {"Z", "X", "Y"};
+    s.lift_active = {true, false, false};
+    checker.add_hli_state(s);
+  }
+  return checker.finish();
+}
+
+std::map<std::string, Violation> by_quantity(const CheckReport& r) {
+  std::map<std::string, Violation> found;
+  for (const Violation& v : r.violations) found[v.axis + " " + v.quantity] = v;
+  return found;
+}
+
+}  // namespace
+
+TEST_CASE("LIFT-2 RIG-4 limit check: a lift-active axis may use the overload range up to P-AXIS-00442", "[check][lift]") {
+  // 1.5 a_max and 1.18 j_max while the HLI shows lift_active: within
+  // a_max * 2000 / 1000 and j_max * 2.
+  const CheckReport r = lift_motion(1.5 * 1500, 50, 250, true);
+  CHECK(r.passed());
+  CHECK(r.axes[2].cmd_a_lift == Approx(2250).epsilon(1e-3));
+  CHECK(r.axes[2].cmd_j_lift > 60000);
+  CHECK(r.axes[2].cmd_j_lift <= r.axes[2].j_lift_limit);
+  CHECK(r.axes[2].j_lift_limit == Approx(120000));
+  CHECK(r.axes[2].a_err_limit == Approx(3000));
+  CHECK(r.axes[2].cmd_a == 0);  // no commanded acceleration outside the lift
+  CHECK(r.axes[2].lift_cycles == 201);
+  CHECK(r.axes[0].lift_cycles == 0);
+  CHECK(r.axes[0].cmd_a_lift == 0);
+}
+
+TEST_CASE("LIFT-2 RIG-4 limit check: beyond P-AXIS-00442 a lift-active axis is a violation of the overload range",
+          "[check][lift]") {
+  const CheckReport r = lift_motion(2.1 * 1500, 50, 250);
+  REQUIRE_FALSE(r.passed());
+  auto found = by_quantity(r);
+  REQUIRE(found.count("Z commanded acceleration (lift overload range, P-AXIS-00442)"));
+  const Violation& v = found["Z commanded acceleration (lift overload range, P-AXIS-00442)"];
+  CHECK(v.limit == Approx(3000));
+  CHECK(std::abs(v.value) == Approx(3150).epsilon(1e-3));
+  CHECK(r.violations.size() == 2);  // the two episodes near a's peaks, nothing else
+  CHECK_FALSE(found.count("Z commanded acceleration"));
+  CHECK_FALSE(found.count("Z commanded velocity"));
+}
+
+TEST_CASE("LIFT-2 RIG-4 limit check: without lift_active the plain a_max and j_max hold", "[check][lift]") {
+  auto found = by_quantity(lift_motion(1.5 * 1500, -1, -1));
+  REQUIRE(found.count("Z commanded acceleration"));
+  CHECK(found["Z commanded acceleration"].limit == 1500);
+  CHECK(found.count("Z commanded jerk"));
+  CHECK_FALSE(found.count("Z commanded acceleration (lift overload range, P-AXIS-00442)"));
+  // lift_active on another stretch of the run excuses nothing here.
+  found = by_quantity(lift_motion(1.5 * 1500, 300, 399));
+  CHECK(found.count("Z commanded acceleration"));
+}
+
+TEST_CASE("LIFT-2 RIG-4 limit check: the lift's overload range leaves v_max as it is", "[check][lift]") {
+  MachineConfig m = test::xyz_machine();
+  LimitChecker checker(m);
+  for (int64_t k = 0; k < 100; ++k) {
+    checker.add_setpoint(2, k, 0.2 * k);  // 200 mm/s, Z v_max 150
+    checker.add_lift_active(2, k);
+  }
+  auto found = by_quantity(checker.finish());
+  REQUIRE(found.count("Z commanded velocity"));
+  CHECK(found["Z commanded velocity"].limit == 150);
 }

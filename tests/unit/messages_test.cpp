@@ -53,6 +53,7 @@ TEST_CASE("KRN-4 messages: HLI state and control survive encoding unchanged", "[
   CHECK(t.m_function_request_r);
   CHECK(t.m_function_nr_r == 48);
   CHECK(t.backward_motion.request_r);
+  CHECK(t.lift_active == std::vector<bool>{false, false});  // LCM's arrays all have n_axes elements
 
   HliControl c;
   c.cycle = 7;
@@ -125,4 +126,18 @@ TEST_CASE("RIG-2 channels: the axis of an axis channel name, the inverse of axis
   CHECK(channels::axis_of_command(channels::axis_state("X")).empty());
   CHECK(channels::axis_of_state("AXIS__STATE").empty());
   CHECK(channels::axis_of_command("HLI_STATE").empty());
+}
+
+TEST_CASE("LIFT-7 messages: lift_active / lift_suppressed per axis survive encoding", "[messages][lift]") {
+  HliState s;
+  s.axis_name = {"X", "Y", "Z"};
+  s.axis_position_r = {0, 0, 300000};
+  s.lift_active = {false, false, true};
+  s.lift_suppressed = {true, false, true};
+  const hil::hli_state_t m = lcm_support::to_message(s, 0);
+  CHECK(m.n_axes == 3);
+  CHECK(m.lift_active == std::vector<int8_t>{0, 0, 1});
+  const HliState t = lcm_support::from_message(through_the_wire(m));
+  CHECK(t.lift_active == s.lift_active);
+  CHECK(t.lift_suppressed == s.lift_suppressed);
 }

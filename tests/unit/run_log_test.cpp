@@ -12,6 +12,7 @@
 #include <hil/scenario_text_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -54,6 +55,8 @@ struct SyntheticRun {
   std::function<bool(const std::string& channel, int64_t cycle)> keep = [](const std::string&, int64_t) {
     return true;
   };
+  std::function<double(int64_t cycle)> x;  // X's setpoints instead of v * t
+  bool x_lifts = false;                    // HLI_STATE: lift_active for X in every cycle
 };
 
 void write_log(const std::string& path, const SyntheticRun& run) {
@@ -82,7 +85,7 @@ void write_log(const std::string& path, const SyntheticRun& run) {
       sp.run_id = run.run_id;
       sp.cycle = k;
       sp.axis = axis;
-      sp.position = axis == "X" ? run.v * k * 0.001 : 0;
+      sp.position = axis != "X" ? 0 : run.x ? run.x(k) : run.v * k * 0.001;
       if (run.keep(channels::axis_command(axis), k)) write(log, channels::axis_command(axis), sp);
       hil::axis_state_t st{};
       st.run_id = run.run_id;
@@ -94,6 +97,13 @@ void write_log(const std::string& path, const SyntheticRun& run) {
     hil::hli_state_t hs{};
     hs.run_id = run.run_id;
     hs.cycle = k;
+    if (run.x_lifts) {
+      hs.n_axes = 3;
+      hs.axis_name = {"Z", "Y", "X"};  // by name, not by position
+      hs.axis_position_r = {0, 0, 0};
+      hs.lift_active = {0, 0, 1};
+      hs.lift_suppressed = {0, 0, 0};
+    }
     if (run.keep(channels::hli_state, k)) write(log, channels::hli_state, hs);
     hil::hli_control_t hc{};
     hc.run_id = run.run_id;
@@ -172,6 +182,32 @@ TEST_CASE("RIG-4 run log: a log is read back with its manifest, events and a lim
   REQUIRE_FALSE(report->passed());
   CHECK(report->violations[0].quantity == "commanded velocity");
   CHECK(report->violations[0].value == Approx(300));
+  std::remove(path.c_str());
+}
+
+TEST_CASE("LIFT-2 RIG-4 run log: HLI_STATE's lift_active gives an axis the overload range, matched by cycle",
+          "[log][lift]") {
+  // X: 1.5 a_max (3000 mm/s^2 of 2000; P-AXIS-00442 2000: 4000) and 1.5 j_max
+  // (60000 of 40000: 80000 while lifting), v 150 of 250.
+  SyntheticRun run;
+  run.x = [](int64_t k) { return 7.5 * (1 - std::cos(20 * 0.001 * static_cast<double>(k))); };
+  run.x_lifts = true;
+  const std::string path = temp_path("lift.lcmlog");
+  write_log(path, run);
+  std::optional<logger::CheckReport> report;
+  logger::read_run_log(path, &report);
+  REQUIRE(report);
+  CHECK(report->passed());
+  CHECK(report->axes[0].cmd_a_lift == Approx(3000).epsilon(1e-3));
+  CHECK(report->axes[0].lift_cycles == 100);
+  CHECK(report->axes[2].lift_cycles == 0);
+  run.x_lifts = false;  // the same motion without a lift
+  write_log(path, run);
+  logger::read_run_log(path, &report);
+  REQUIRE(report);
+  REQUIRE_FALSE(report->passed());
+  CHECK(report->violations[0].quantity == "commanded acceleration");
+  CHECK(report->violations[0].limit == 2000);
   std::remove(path.c_str());
 }
 

@@ -243,3 +243,168 @@ nc_program: "M30\n"
 )")),
                     Catch::Contains("machine.m_pre_outp[7]: must be a number >= 0, not -1"));
 }
+
+namespace {
+
+// X and a lift axis Z.
+Scenario lift_scenario(const std::string& rest) {
+  return parse_scenario(YAML::Load(R"(
+machine:
+  cycle_time_us: 1000
+  axes:
+    - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002}
+    - {name: Z, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002}
+nc_program: "G01 X1 F100\n"
+)" + rest));
+}
+
+HliState xz_state(int64_t cycle, double z_mm, bool lift_active, ChannelState cs = ChannelState::active) {
+  HliState s;
+  s.cycle = cycle;
+  s.channel_state = cs;
+  s.axis_name = {"X", "Z"};
+  s.axis_position_r = {0, std::llround(z_mm * hli_units_per_mm)};
+  s.lift_active = {false, lift_active};
+  s.lift_suppressed = {false, false};
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("LIFT-7 RIG-5 scenario: lift_active / lift_suppressed per axis by name in triggers and expectations",
+          "[scenario][lift]") {
+  const Scenario s = lift_scenario(R"(
+plc:
+  timeline:
+    - when: {lift_active: {Z: true}}
+      set: {feedhold.command_w: true}
+expect:
+  - when: {lift_active: {Z: true}}
+    lift_suppressed: {Z: false, X: false}
+  - when: program_end
+    lift_active: {Z: true}
+)");
+  plc::ScenarioEngine engine(s);
+  CHECK_FALSE(engine.cycle(xz_state(1, 0, false)).feedhold.command_w);
+  CHECK(engine.cycle(xz_state(2, 1, true)).feedhold.command_w);
+  engine.cycle(xz_state(3, 0, false, ChannelState::program_end));
+  const auto results = engine.finish();
+  REQUIRE(results.size() == 2);
+  CHECK(results[0].passed);
+  CHECK_THAT(results[0].what, Catch::Contains("lift_active.Z=true"));
+  CHECK_FALSE(results[1].passed);
+  CHECK_THAT(results[1].detail, Catch::Contains("lift_active of Z false"));
+  // Per axis only: a BOOL, an unknown axis, a non-BOOL value are refused.
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    lift_active: true\n"),
+                    Catch::Contains("expect[0].lift_active: must map axis names to true or false"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: {lift_active: {Q: true}}\n"),
+                    Catch::Contains("expect[0].when.lift_active: axis 'Q' is not on the machine"));
+  CHECK_THROWS_WITH(lift_scenario("plc:\n  timeline:\n    - when: {lift_suppressed: {Y: true}}\n      set: {}\n"),
+                    Catch::Contains("plc.timeline[0].when.lift_suppressed: axis 'Y' is not on the machine"));
+  CHECK_THROWS(lift_scenario("expect:\n  - when: program_end\n    lift_active: {Z: 2}\n"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    lift_activ: {Z: true}\n"),
+                    Catch::Contains("unknown key, did you mean lift_active?"));
+}
+
+TEST_CASE("LIFT-2 RIG-5 scenario: an axis' highest and lowest commanded position over a window (since .. when)",
+          "[scenario][lift]") {
+  const Scenario s = lift_scenario(R"(
+expect:
+  - since: {lift_active: {Z: true}}
+    when: {lift_active: {Z: false}}
+    axis_max_mm: {Z: 30}
+    axis_min_mm: {Z: 5}
+    axis_max_at_most_mm: {Z: 30}
+  - when: program_end
+    axis_max_at_least_mm: {Z: 31}
+    axis_min_at_most_mm: {Z: 0}
+    axis_min_at_least_mm: {Z: 1}
+    axis_max_mm: {X: 0}
+    tolerance_mm: 0.01
+)");
+  plc::ScenarioEngine engine(s);
+  // Z at 0, lifts to 30 (5 cycles at 5 .. 30), lands at 10; the lift window
+  // opens with the first lift_active and closes with the first cycle without.
+  const double z[] = {0, 0, 5, 20, 30, 25, 10, 10};
+  const bool lift[] = {false, false, true, true, true, true, false, false};
+  for (int k = 0; k < 8; ++k) engine.cycle(xz_state(k, z[k], lift[k], k == 7 ? ChannelState::program_end : ChannelState::active));
+  const auto results = engine.finish();
+  REQUIRE(results.size() == 2);
+  // 'when' (Z not lifting) held from cycle 0 on, but counts only from the
+  // window's start: highest 30, lowest 5 (its first cycle), 0 is outside.
+  CHECK(results[0].passed);
+  CHECK_THAT(results[0].what, Catch::Contains("since lift_active.Z=true"));
+  CHECK_FALSE(results[1].passed);  // the whole run: highest 30 < 31, lowest 0 < 1
+  CHECK_THAT(results[1].detail, Catch::Contains("highest Z 30 mm < 31 mm"));
+  CHECK_THAT(results[1].detail, Catch::Contains("lowest Z 0 mm < 1 mm"));
+  CHECK_THAT(results[1].detail, !Catch::Contains("lowest Z 0 mm >"));
+  CHECK_THAT(results[1].detail, !Catch::Contains("X"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    axis_max_mm: {Q: 1}\n"),
+                    Catch::Contains("expect[0].axis_max_mm: axis 'Q' is not on the machine"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    axis_max_mm: {Z: .nan}\n"),
+                    Catch::Contains("expect[0].axis_max_mm.Z"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    axis_peak_mm: {Z: 1}\n"),
+                    Catch::Contains("expect[0].axis_peak_mm: unknown key"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    since: {lift_active: {Z: true, Z: false}}\n"),
+                    Catch::Contains("expect[0].since.lift_active"));
+}
+
+TEST_CASE("LIFT-2 RIG-5 scenario: the time from the window's start to 'when' (path time)", "[scenario][lift]") {
+  const Scenario s = lift_scenario(R"(
+expect:
+  - since: {channel_state: ACTIVE}
+    when: program_end
+    time_s_at_least: 0.002
+    time_s_at_most: 0.003
+  - when: program_end
+    time_s_at_most: 0.003
+  - since: {lift_active: {Z: true}}
+    when: program_end
+)");
+  plc::ScenarioEngine engine(s);
+  engine.cycle(xz_state(0, 0, false, ChannelState::ready));
+  engine.cycle(xz_state(1, 0, false, ChannelState::ready));
+  engine.cycle(xz_state(2, 0, false));
+  engine.cycle(xz_state(3, 0, false));
+  engine.cycle(xz_state(4, 0, false));
+  engine.cycle(xz_state(5, 0, false, ChannelState::program_end));
+  const auto results = engine.finish();
+  REQUIRE(results.size() == 3);
+  CHECK(results[0].passed);  // ACTIVE at 0.002 s, PROGRAM_END at 0.005 s: 0.003 s
+  CHECK_FALSE(results[1].passed);  // without 'since': from the run's start, 0.005 s
+  CHECK_THAT(results[1].detail, Catch::Contains("time 0.005 s > 0.003 s"));
+  CHECK_FALSE(results[2].passed);
+  CHECK_THAT(results[2].detail, Catch::Contains("'since' never held"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    time_s_at_least: 2\n    time_s_at_most: 1\n"),
+                    Catch::Contains("time_s_at_least is more than time_s_at_most"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    time_s_at_most: -1\n"),
+                    Catch::Contains("expect[0].time_s_at_most"));
+}
+
+TEST_CASE("LIFT-2 LIFT-8 RIG-5 scenario: the largest path velocity over a window", "[scenario][lift]") {
+  const Scenario s = lift_scenario(R"(
+expect:
+  - since: {lift_active: {Z: true}}
+    when: {lift_active: {Z: false}}
+    path_velocity_max_at_most_mm_s: 20
+  - when: program_end
+    path_velocity_max_at_most_mm_s: 20
+    path_velocity_max_at_least_mm_s: 50
+)");
+  plc::ScenarioEngine engine(s);
+  const double v[] = {50, 30, 20, 10, 15, 0};  // the lift in cycles 2 .. 3, the window 2 .. 4
+  const bool lift[] = {false, false, true, true, false, false};
+  for (int k = 0; k < 6; ++k) {
+    HliState st = xz_state(k, 0, lift[k], k == 5 ? ChannelState::program_end : ChannelState::active);
+    st.path_velocity = k == 1 ? -v[k] : v[k];  // backward motion counts by its magnitude
+    engine.cycle(st);
+  }
+  const auto results = engine.finish();
+  REQUIRE(results.size() == 2);
+  CHECK(results[0].passed);  // 20, 10, 15 in the window; 50 and 30 before it
+  CHECK_FALSE(results[1].passed);
+  CHECK_THAT(results[1].detail, Catch::Contains("path_velocity up to 50 mm/s > 20 mm/s"));
+  CHECK_THAT(results[1].detail, !Catch::Contains(" < 50"));
+  CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    path_velocity_max_at_most_mm_s: -1\n"),
+                    Catch::Contains("expect[0].path_velocity_max_at_most_mm_s"));
+}
