@@ -132,8 +132,9 @@ ExpectationResult ScenarioEngine::evaluate(const Pending& p, const HliState& s) 
   for (const auto& [name, axes] : e.axis_flags) {
     const HliAxisFlag* flag = find_hli_axis_flag(name);
     for (const auto& [axis, expected] : axes) {
-      const std::optional<bool> value = flag ? flag->read(s, axis) : std::nullopt;
-      check(value == expected, name + " of " + axis + " " + (value ? (*value ? "true" : "false") : "missing"));
+      const std::optional<bool> read = flag ? flag->read(s, axis) : std::nullopt;
+      const bool known = read.has_value(), value = read.value_or(false);
+      check(known && value == expected, name + " of " + axis + " " + (known ? (value ? "true" : "false") : "missing"));
     }
   }
   for (const ExtremeCheck& x : e.extremes) {

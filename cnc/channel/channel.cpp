@@ -248,6 +248,10 @@ void Channel::write_state() {
   insert_.write(hli_, path_);
   for (size_t i = 0; i < machine_.axes.size(); ++i)  // a modulo axis within its range (KRN-7)
     hli_.axis_position_r[i] = std::llround(machine_.axes[i].in_modulo_range(setpoints()[i].position) * hli_units_per_mm);
+  for (size_t i = 0; i < machine_.axes.size(); ++i) {  // LIFT-7
+    hli_.lift_active[i] = lift_.active(i);
+    hli_.lift_suppressed[i] = lift_.suppressed(i);
+  }
   hli_.program_start.state_r = hli_.channel_state == ChannelState::active;
   hli_.stop_conditions_r = hold().stop_conditions() | programmed_stop_.stop_conditions() | insert_.stop_conditions();
   if (hli_.override.state_r == 0) hli_.stop_conditions_r |= stop_condition::override_zero;

@@ -25,19 +25,19 @@ void Lift::reach_block(size_t index, const std::vector<Block>& blocks, int32_t o
   const auto starting = std::find_if(ranges_.begin(), ranges_.end(), [&](const LiftRange& r) { return r.start == index; });
   if (starting == ranges_.end()) return;
   const size_t r = static_cast<size_t>(starting - ranges_.begin());
-  if (active_ && path_left_ && !positioning_) finish();
-  if (active_) {
-    next_ = r;  // begins once the current range's lift axis has positioned
+  if (active_) {  // begins once the current range has ended (update), from here
+    next_ = r;
+    next_covered_ = covered_;
     return;
   }
-  start(r, override_value);
+  start(r, override_value, covered_);
 }
 
-void Lift::start(size_t range_index, int32_t override_value) {
+void Lift::start(size_t range_index, int32_t override_value, double covered_at_start) {
   current_ = range_index;
   active_ = true;
   path_left_ = positioning_ = landed_ = false;
-  covered_at_start_ = covered_;
+  covered_at_start_ = covered_at_start;
   const LiftRange& g = range();
   state_ = MotionState{g.z0, 0, 0, 0};
   advanced_.reset();
@@ -132,7 +132,7 @@ bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vec
     finish();
     changed = true;
     if (next_) {
-      start(*next_, override_value);
+      start(*next_, override_value, next_covered_);
       next_.reset();
     }
   }

@@ -62,7 +62,7 @@ class Lift {
 
  private:
   const LiftRange& range() const { return ranges_[current_]; }
-  void start(size_t range_index, int32_t override_value);
+  void start(size_t range_index, int32_t override_value, double covered_at_start);
   void finish();
   void position_to(double target);
   double since_start_covered(const PathInterpolator& path) const {
@@ -75,7 +75,10 @@ class Lift {
   // The range the lift runs now.
   bool active_ = false;
   size_t current_ = 0;
-  std::optional<size_t> next_;  // one that began while the current one still positioned
+  // A range reached while the current one had not ended yet (#FLUSH ends
+  // one and begins the next; a positioning still runs), and where it began.
+  std::optional<size_t> next_;
+  double next_covered_ = 0;
   double covered_at_start_ = 0;
   bool path_left_ = false;
   MotionState state_;

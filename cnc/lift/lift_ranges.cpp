@@ -69,6 +69,7 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
   std::optional<LiftRange> open;
   auto close = [&](size_t k) {
     open->end = k;
+    position[static_cast<size_t>(open->command.axis)] = open->command.pos;  // where the next part starts
     ranges.push_back(*open);
     open.reset();
   };
