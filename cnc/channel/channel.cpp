@@ -60,14 +60,16 @@ void Channel::apply_program_start(const ControlUnitBool& start) {
 }
 
 void Channel::start_program() {
-  DecodedProgram program = decode_program(nc_program_, machine_, path_.setpoint_positions());
+  std::vector<double> start_position;  // a lift axis parked by the last program's lift included
+  for (const AxisSetpoint& setpoint : setpoints_) start_position.push_back(setpoint.position);
+  DecodedProgram program = decode_program(nc_program_, machine_, start_position);
   if (program.error) {
     decode_failed_ = true;
     events_.raise(*program.error);  // reported at once; the blocks before it still run
   }
   std::vector<Event> warnings;
   std::vector<Block> blocks = apply_m_pre_output(std::move(program.blocks), machine_, warnings);
-  lift_.prepare(blocks, path_.setpoint_positions());
+  lift_.prepare(blocks, start_position);
   path_.load(std::move(blocks));
   backward_refused_ = false;
   for (Event& warning : warnings) events_.raise(std::move(warning));
@@ -156,14 +158,14 @@ void Channel::interpolate(double t) {
   // stop (M00, M01, an insert stop mark at the end) holds it; a decode
   // error stops the channel after every block decoded correctly.
   if (progress == PathProgress::all_blocks_run && !actions_.waiting() && !programmed_stop_.stopped() &&
-      !insert_.at_mark() && !insert_.pending() && hli_.channel_state != ChannelState::error)
+      !insert_.at_mark() && !insert_.pending() && !lift_.running() && hli_.channel_state != ChannelState::error)
     hli_.channel_state = decode_failed_ ? ChannelState::error : ChannelState::program_end;
   if (hli_.channel_state == ChannelState::program_end || hli_.channel_state == ChannelState::error)
     insert_.program_end();
 }
 
 void Channel::start_short_cut(double t) {
-  lift_.land_now();  // in a lift range: the lift axis lands first, the path waits
+  lift_.land_now(path_);  // in a lift range: the lift axis lands first, the path waits
   insert_.before_short_cut(path_, t, distance_mm());
   const DeleteDistanceToGo::Outcome outcome = ddtg_.start_short_cut(path_, t, events_);
   update_hold();
@@ -227,7 +229,7 @@ void Channel::update_hold() {
 void Channel::reach_block(const Block& block, bool run_commands) {
   events_.set_block(block);
   if (!run_commands) return;
-  lift_.reach_block(static_cast<size_t>(&block - path_.blocks().data()), path_.blocks(), hli_.override.state_r);
+  lift_.reach_block(static_cast<size_t>(&block - path_.blocks().data()), hli_.override.state_r);
   update_hold();
   if (actions_.queue(block)) update_hold();
   if (block.distance_prog_start) distance_.apply(*block.distance_prog_start);

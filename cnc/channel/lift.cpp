@@ -12,22 +12,24 @@ namespace hil::cnc {
 void Lift::prepare(std::vector<Block>& blocks, const std::vector<double>& start_position) {
   ranges_ = prepare_lift_ranges(blocks, machine_, start_position);
   covered_ = 0;
+  last_reached_ = 0;
+  blocks_run_ = false;
   active_ = path_left_ = positioning_ = landed_ = missed_landing_ = false;
-  next_.reset();
+  pending_.clear();
   advanced_.reset();
   cap_ = 0;
 }
 
-void Lift::reach_block(size_t index, const std::vector<Block>& blocks, int32_t override_value) {
+void Lift::reach_block(size_t index, int32_t override_value) {
   // Reaching a block after the range, or its last block when that one has
   // no motion (LIFT_END, #FLUSH alone on a line), the path has run the range.
-  if (active_ && (index > range().end || (index == range().end && !blocks[index].has_motion))) path_left_ = true;
+  last_reached_ = index;
+  if (active_ && range().passed_by(index)) path_left_ = true;
   const auto starting = std::find_if(ranges_.begin(), ranges_.end(), [&](const LiftRange& r) { return r.start == index; });
   if (starting == ranges_.end()) return;
   const size_t r = static_cast<size_t>(starting - ranges_.begin());
   if (active_) {  // begins once the current range has ended (update), from here
-    next_ = r;
-    next_covered_ = covered_;
+    pending_.push_back({r, covered_});
     return;
   }
   start(r, override_value, covered_);
@@ -36,8 +38,9 @@ void Lift::reach_block(size_t index, const std::vector<Block>& blocks, int32_t o
 void Lift::start(size_t range_index, int32_t override_value, double covered_at_start) {
   current_ = range_index;
   active_ = true;
-  path_left_ = positioning_ = landed_ = false;
+  positioning_ = landed_ = false;
   covered_at_start_ = covered_at_start;
+  path_left_ = range().passed_by(last_reached_);  // one that began while another ended may be run already
   const LiftRange& g = range();
   state_ = MotionState{g.z0, 0, 0, 0};
   advanced_.reset();
@@ -62,9 +65,10 @@ void Lift::position_to(double target) {
   advanced_.reset();
 }
 
-void Lift::land_now() {
-  if (!active_ || positioning_ || landed_) return;
-  position_to(range().command.pos);
+void Lift::land_now(PathInterpolator& path) {
+  if (!active_) return;
+  if (!positioning_ && !landed_) position_to(range().command.pos);
+  path.place_axis(static_cast<size_t>(range().command.axis), hold_position_);
 }
 
 void Lift::stop_now() {
@@ -76,15 +80,37 @@ void Lift::stop_now() {
 
 void Lift::finish() {
   const double pos = range().command.pos;
-  if (std::abs(state_.p - pos) > 1e-6 || std::abs(state_.v) > 1e-6) missed_landing_ = true;
+  // Lifting lands with the path by construction; Advanced Lifting before it.
+  if (advanced_ && !advanced_->landed()) missed_landing_ = true;
+  if (blocks_run_) {
+    parked_axis_ = static_cast<size_t>(range().command.axis);
+    parked_ = AxisSetpoint{pos, 0, 0};
+  }
   active_ = positioning_ = landed_ = false;
   advanced_.reset();
   cap_ = 0;
 }
 
 bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vector<AxisSetpoint>& setpoints) {
-  if (!active_) return false;
+  if (!active_) {
+    apply_parked(setpoints);
+    return false;
+  }
   bool changed = false;
+  if (path_left_ && !positioning_) {
+    // The path has run the range: from this cycle on the lift axis is the
+    // path's again (on POS: the blocks after a range start there).
+    finish();
+    if (!pending_.empty()) {
+      start(pending_.front().range, override_value, pending_.front().covered_at_start);
+      pending_.pop_front();
+    }
+    if (!active_) {
+      apply_parked(setpoints);
+      return true;
+    }
+    changed = true;
+  }
   const LiftRange& g = range();
   const double dt = machine_.cycle_time_s();
   if (positioning_) {
@@ -128,15 +154,19 @@ bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vec
   }
   const size_t axis = static_cast<size_t>(g.command.axis);
   setpoints[axis] = AxisSetpoint{state_.p, state_.v, state_.a};
-  if (path_left_ && !positioning_) {
-    finish();
-    changed = true;
-    if (next_) {
-      start(*next_, override_value, next_covered_);
-      next_.reset();
-    }
-  }
   return changed;
+}
+
+// Parked until the path takes the lift axis over from there (a next program).
+void Lift::apply_parked(std::vector<AxisSetpoint>& setpoints) {
+  if (parked_ && std::abs(setpoints[parked_axis_].position - parked_->position) <= 1e-9) parked_.reset();
+  if (parked_) setpoints[parked_axis_] = *parked_;
+}
+
+bool Lift::holds_path() const {
+  return (active_ && positioning_) || std::any_of(pending_.begin(), pending_.end(), [&](const Pending& p) {
+           return ranges_[p.range].positioning;
+         });
 }
 
 int32_t Lift::override_cap(int32_t override_value) const {

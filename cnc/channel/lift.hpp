@@ -8,6 +8,7 @@
 // it while the path waits.
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -31,22 +32,24 @@ class Lift {
   // The path's covered distance as the interpolator reports it (DPS-1 scale, signed).
   void count(double covered) { covered_ += covered; }
   // The path reached block `index` for the first time.
-  void reach_block(size_t index, const std::vector<Block>& blocks, int32_t override_value);
+  void reach_block(size_t index, int32_t override_value);
   // Every block has run (program end, or the blocks before a decode error).
-  void all_blocks_run() { path_left_ = true; }
+  void all_blocks_run() { path_left_ = blocks_run_ = true; }
   // Once per cycle after the path moved: the lift axis' setpoint into
   // `setpoints`. True if what the lift asks of the path changed
   // (override_cap, holds_path): the channel updates its hold.
   bool update(const PathInterpolator& path, int32_t override_value, std::vector<AxisSetpoint>& setpoints);
   // A delete distance to go short cut starts where the path stands: the
   // lift axis lands on POS first (the path waits), then stays there until
-  // the range ends.
-  void land_now();
+  // the range ends. The path's short cut starts from there: placed in `path`.
+  void land_now(PathInterpolator& path);
   // The channel stops on an error: the lift axis brakes to rest as well.
   void stop_now();
 
+  // A lift range runs or waits to (the program has not ended before it has).
+  bool running() const { return active_ || !pending_.empty(); }
   // The path waits for the lift axis (a range without path motion, a landing before a short cut).
-  bool holds_path() const { return active_ && positioning_; }
+  bool holds_path() const;
   // LIFT-8: Advanced Lifting accepts no higher override than at its start
   // while rising, than at the start of lowering while lowering.
   int32_t override_cap(int32_t override_value) const;
@@ -64,6 +67,7 @@ class Lift {
   const LiftRange& range() const { return ranges_[current_]; }
   void start(size_t range_index, int32_t override_value, double covered_at_start);
   void finish();
+  void apply_parked(std::vector<AxisSetpoint>& setpoints);
   void position_to(double target);
   double since_start_covered(const PathInterpolator& path) const {
     return covered_ + path.front_covered() - covered_at_start_;
@@ -72,15 +76,25 @@ class Lift {
   const MachineConfig& machine_;
   std::vector<LiftRange> ranges_;
   double covered_ = 0;
+  size_t last_reached_ = 0;  // the last block the path reached
   // The range the lift runs now.
   bool active_ = false;
   size_t current_ = 0;
-  // A range reached while the current one had not ended yet (#FLUSH ends
-  // one and begins the next; a positioning still runs), and where it began.
-  std::optional<size_t> next_;
-  double next_covered_ = 0;
+  // Ranges reached while the current one had not ended yet (#FLUSH ends
+  // one and begins the next; ranges without path motion one after the
+  // other), in order, with where each began.
+  struct Pending {
+    size_t range = 0;
+    double covered_at_start = 0;
+  };
+  std::deque<Pending> pending_;
   double covered_at_start_ = 0;
   bool path_left_ = false;
+  // Every block has run: a range ended there leaves the lift axis on POS,
+  // where no block of the path brings it (parked_).
+  bool blocks_run_ = false;
+  std::optional<AxisSetpoint> parked_;
+  size_t parked_axis_ = 0;
   MotionState state_;
   std::optional<AdvancedLifting> advanced_;
   int32_t cap_ = 0;  // LIFT-8, 0.1 %; 0: none

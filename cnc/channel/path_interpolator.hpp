@@ -99,6 +99,10 @@ class PathInterpolator {
   // Reports the travelled part of the front block and empties the
   // look-ahead: the path stands there.
   StopPoint leave_front(double t);
+  // The path stands; axis `axis` stands at `position` instead of where the
+  // path put it (a lift axis landed by the lift function before a short
+  // cut, LIFT-2): the path goes on from there.
+  void place_axis(size_t axis, double position) { setpoints_[axis] = {position, 0, 0}; }
   // A linear segment as block `target` into the empty look-ahead, not
   // smoothed (DDTG-2); false if it has no length.
   bool push_short_cut(size_t target, const Motion& cut);

@@ -69,6 +69,7 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
   std::optional<LiftRange> open;
   auto close = [&](size_t k) {
     open->end = k;
+    open->end_has_motion = blocks[k].has_motion;
     position[static_cast<size_t>(open->command.axis)] = open->command.pos;  // where the next part starts
     ranges.push_back(*open);
     open.reset();
@@ -118,8 +119,8 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
 
     double v_cap = inf, a_cap = inf, j_cap = inf;
     if (range.length < no_path_mm || !(v_programmed > 0)) {
-      range.positioning = pos != z0;
-      if (range.positioning) blocks[range.start].lift_positioning = true;
+      range.positioning = true;
+      blocks[range.start].lift_positioning = pos != z0;
     } else if (machine.lift_method == LiftMethod::time_based) {
       // The path may not reach the end before the lift axis could land even
       // by the direct move, at the highest override (LIFT-2).

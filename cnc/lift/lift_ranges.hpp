@@ -19,6 +19,7 @@ constexpr size_t lift_look_ahead_blocks = 20;
 struct LiftRange {
   size_t start = 0;  // the block with lift_start
   size_t end = 0;    // the range's last block (lift_end, or the program's last)
+  bool end_has_motion = false;  // the path has run the range once it reaches the block after `end`, else `end`
   LiftStart command;
   double z0 = 0;     // mm, where the lift axis stands at the start
   // mm, the summit aimed for: POS_LIMIT, or POS or z0 where they lie beyond
@@ -38,6 +39,8 @@ struct LiftRange {
   std::vector<double> v_ahead;
 
   bool contains(size_t block) const { return block >= start && block <= end; }
+  // Reaching block `index`, the path has run the range.
+  bool passed_by(size_t index) const { return index > end || (index == end && !end_has_motion); }
 };
 
 // The lift axis' limits for its own motion: Advanced Lifting plans up to

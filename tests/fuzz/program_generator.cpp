@@ -95,12 +95,14 @@ constexpr double weights[][item_count] = {
     /*steps*/ {0, 1, 2, 0, 6, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
     /*commands*/ {1, 2, 0, 0, 0.5, 0.5, 0, 0, 0, 0, 0.3, 0.5, 2, 2, 1.5, 2, 1.5, 0, 0, 0, 0, 0},
     /*contour*/ {1, 2, 1, 0.5, 1.5, 1, 1.5, 0.3, 0.3, 0.3, 0.5, 1, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3, 2.5, 4, 2, 0},
-    /*lift*/ {1.5, 1.5, 0.5, 1, 0.5, 1, 0.5, 0.2, 0.3, 0.3, 0.3, 1, 0.5, 0.5, 0.3, 0.5, 0.3, 0.3, 0, 0, 0, 4},
+    /*lift*/ {1.5, 1.5, 0.5, 1, 0.5, 1, 0.5, 0.2, 0.3, 0.3, 0.3, 1, 0.5, 0.5, 0.3, 0, 0.3, 0.3, 0, 0, 0, 4},
 };
 
 // What may stand inside a lift range: no motion of the lift axis Z (LIFT-6).
-constexpr Item in_lift_items[] = {long_line, short_line, tiny_line, rapid,  arc_random, tangent_chain, full_circle,
-                                  tiny_arc,  feed_change, m_alone,  m_with_motion, dwell, marker, dps_command, slope};
+// No #DEL DIST2GO markers in lift programs: a short cut past a lift
+// command is error 51016 (DDTG-8), tested on its own.
+constexpr Item in_lift_items[] = {long_line, short_line, tiny_line, rapid,         arc_random, tangent_chain, full_circle,
+                                  tiny_arc,  feed_change, m_alone,  m_with_motion, dwell,      dps_command,   slope};
 
 class Generator {
  public:
@@ -161,6 +163,7 @@ class Generator {
       got = relative ? z + read_back(text) : read_back(text);
       words += std::string(" ") + key + "=" + text;
     };
+    out_.lifts = true;
     double limit = 0, pos = z;
     const double limit_wanted = z + sign * rng_.log_uniform(0.2, 60);
     const size_t pos_kind = rng_.pick({1.0, 3.0, 0.5});  // none, near where it stands, beyond the limit

@@ -72,6 +72,10 @@ struct GeneratedProgram {
   // dist_prog_start counts the programmed distance the curve replaces, so
   // where the curve is longer it grows slower than the path moves.
   bool contoured = false;
+  // Lift ranges (LIFT-1): the last motion block's end is not the program's
+  // end on the lift axis, which lands on POS after it; a short cut past a
+  // lift command is refused (DDTG-8: 51016) and ends the run in ERROR.
+  bool lifts = false;
   std::vector<int> m_functions;      // every M function output (not M30), in order
   int motion_blocks = 0;
   double dwell_s = 0;                // sum of #TIME
