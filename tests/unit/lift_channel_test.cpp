@@ -54,6 +54,8 @@ struct LiftRig {
     ++k;
     control.program_start.command_w = false;
     control.m_function_ack.command_w = hli().m_function_request_r;  // acknowledge at once
+    control.continue_motion.command_w = false;
+    if (control.insert_cmd.semaphor_rw) control.insert_cmd.semaphor_rw = hli().insert_cmd.semaphor_rw;  // ISC-1
   }
   void start() {
     control.program_start.command_w = true;
@@ -358,6 +360,74 @@ TEST_CASE("LIFT-6 DDTG-8 delete distance to go in a lift range: the lift axis la
     rig.run_to_end();
     CHECK(rig.hli().channel_state == ChannelState::error);
     CHECK(rig.hli().last_error_id == 51016);
+    rig.require_within_limits();
+  }
+}
+
+TEST_CASE("LIFT-2 the path feed is reduced where the lift axis could not make POS in time", "[lift][channel]") {
+  // 30 mm up in 10 mm of path: at F6000 (100 mm/s) the path would take 0.1 s.
+  const std::string program =
+      "N10 G01 X0 Z10 F6000\nN20 Z[LIFT_START POS=40 POS_LIMIT=40]\nN30 X10\nN40 Z[LIFT_END]\nN50 X20\nN60 M30\n";
+  for (const MachineConfig& m : {test::xyz_lift_machine(), test::xyz_lifting_machine()}) {
+    LiftRig rig(program, m);
+    rig.start();
+    double fastest_in_range = 0;
+    rig.run_until([&] {
+      if (rig.hli().block_nr_r == 30) fastest_in_range = std::max(fastest_in_range, rig.hli().path_velocity);
+      return rig.hli().block_nr_r == 50;
+    });
+    INFO(m.name << ": fastest in the range " << fastest_in_range << " mm/s");
+    CHECK(fastest_in_range < 100 * 0.8);
+    CHECK(rig.axis(Z) == Approx(40).margin(1e-9));  // there when the path left the range
+    rig.run_to_end();
+    CHECK(rig.hli().channel_state == ChannelState::program_end);
+    rig.require_within_limits();
+  }
+}
+
+TEST_CASE("LIFT-3 a feed hold while Lifting adds the path's braking to the lift axis: beyond a_max, within "
+          "P-AXIS-00442",
+          "[lift][channel]") {
+  const MachineConfig m = test::xyz_lifting_machine();
+  // 60 mm at 100 mm/s, 20 mm up: the lift axis moves fast in the middle.
+  LiftRig rig("N10 G01 X0 Z10 F6000\nN20 Z[LIFT_START POS=10 POS_LIMIT=30]\nN30 X60\nN40 Z[LIFT_END]\nN50 M30\n", m);
+  rig.start();
+  rig.run_until([&] { return rig.axis(Z) > 14; });  // rising at speed
+  rig.control.feedhold.command_w = true;
+  rig.run_until([&] { return rig.hli().path_velocity == 0; });
+  rig.control.feedhold.command_w = false;
+  rig.run_to_end();
+  const double a = rig.largest_z_acceleration();
+  INFO("largest |a| of Z " << a << " mm/s^2, a_max " << m.axes[Z].a_max << ", P-AXIS-00442 limit "
+                           << m.axes[Z].accel_error_limit());
+  CHECK(a > m.axes[Z].a_max);
+  CHECK(a <= m.axes[Z].accel_error_limit() * (1 + 1e-6));
+  rig.require_within_limits();
+}
+
+TEST_CASE("LIFT-2 LIFT-3 an insert stop mark in a lift range: Lifting stands with the path, Advanced Lifting goes on",
+          "[lift][channel]") {
+  for (const MachineConfig& m : {test::xyz_lift_machine(), test::xyz_lifting_machine()}) {
+    LiftRig rig(cross_block, m);
+    rig.control.insert_cmd.enable_w = true;
+    rig.control.continue_motion.enable_w = true;
+    rig.start();
+    rig.run_until([&] { return rig.hli().block_nr_r == 30; });
+    // A stop mark 3 mm further on with M00 (ISC-1, ISC-5), relative once.
+    rig.control.insert_cmd.command_w = {3 * hli_units_per_mm, 2, 0, 0, 0};
+    rig.control.insert_cmd.semaphor_rw = true;
+    rig.run_until([&] { return (rig.hli().stop_conditions_r & stop_condition::insert_stop_at_dist) != 0; });
+    REQUIRE((rig.hli().stop_conditions_r & stop_condition::insert_stop_at_dist) != 0);
+    const double z_at_stop = rig.axis(Z), x_at_stop = rig.axis(X);
+    for (int i = 0; i < 1500; ++i) rig.step();
+    CHECK(rig.axis(X) == Approx(x_at_stop).margin(1e-9));
+    if (m.lift_method == LiftMethod::path_based) CHECK(rig.axis(Z) == z_at_stop);
+    else CHECK(rig.axis(Z) > z_at_stop + 1);
+    rig.control.continue_motion.command_w = true;
+    rig.step();
+    rig.run_to_end();
+    CHECK(rig.hli().channel_state == ChannelState::program_end);
+    CHECK(rig.axis(Z) == Approx(12));
     rig.require_within_limits();
   }
 }
