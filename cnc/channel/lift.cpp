@@ -50,7 +50,7 @@ void Lift::start(size_t range_index, int32_t override_value, double covered_at_s
   } else if (machine_.lift_method == LiftMethod::time_based) {
     const AxisConfig& axis = machine_.axes[static_cast<size_t>(g.command.axis)];
     advanced_.emplace(g.z0, g.command.pos, g.peak, advanced_lifting_limits(axis), machine_.cycle_time_s());
-    cap_ = override_value;
+    cap_ = override_value;  // LIFT-8: what runs now is accepted
   }
 }
 
@@ -68,7 +68,14 @@ void Lift::position_to(double target) {
 void Lift::land_now(PathInterpolator& path) {
   if (!active_) return;
   if (!positioning_ && !landed_) position_to(range().command.pos);
-  path.place_axis(static_cast<size_t>(range().command.axis), hold_position_);
+  // Where the lift axis stands once this and the ranges without motion
+  // waiting after it have positioned.
+  double landing = hold_position_;
+  for (const Pending& next : pending_) {
+    if (!ranges_[next.range].positioning) break;
+    landing = ranges_[next.range].command.pos;
+  }
+  path.place_axis(static_cast<size_t>(range().command.axis), landing);
 }
 
 void Lift::stop_now() {
@@ -101,10 +108,7 @@ bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vec
     // The path has run the range: from this cycle on the lift axis is the
     // path's again (on POS: the blocks after a range start there).
     finish();
-    if (!pending_.empty()) {
-      start(pending_.front().range, override_value, pending_.front().covered_at_start);
-      pending_.pop_front();
-    }
+    start_pending(override_value);
     if (!active_) {
       apply_parked(setpoints);
       return true;
@@ -125,27 +129,29 @@ bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vec
   } else if (landed_) {
     state_ = MotionState{hold_position_, 0, 0, 0};
   } else if (advanced_) {
-    const bool was_lowering = advanced_->lowering();
     // The least time the path can take to the range's end: the rest of it
     // at the highest velocity programmed from the front block on, at the
-    // highest override the lift accepts (LIFT-8).
-    const double rest = g.length - since_start_covered(path);
+    // override the lift accepts (LIFT-8).
+    const double rest = std::max(g.length - since_start_covered(path), 0.0);
     const size_t front = path.empty() ? g.end : static_cast<size_t>(&path.front_block() - path.blocks().data());
-    const size_t k = std::min(front < g.start ? 0 : front - g.start, g.v_ahead.size() - 1);
-    const int32_t accepted = cap_ > 0 ? cap_ : machine_.override_max_percent * 10;
-    const double v = g.v_ahead[k] * accepted / 1000.0;
-    const double earliest = v > 0 ? std::max(rest, 0.0) / v : std::numeric_limits<double>::infinity();
-    state_ = advanced_->step(earliest);
-    if (!was_lowering && advanced_->lowering()) {  // LIFT-8: the override at the start of lowering
-      if (override_value > 0) cap_ = cap_ > 0 ? std::min(cap_, override_value) : override_value;
-      changed = true;
-    }
+    const double v_programmed = g.v_ahead[std::min(front < g.start ? 0 : front - g.start, g.v_ahead.size() - 1)];
+    const int32_t effective = std::min(override_value, cap_);
+    const bool was_lowering = advanced_->lowering();
+    const double v = v_programmed * effective / 1000.0;
+    state_ = advanced_->step(v > 0 ? rest / v : std::numeric_limits<double>::infinity());
     if (advanced_->landed()) {
       landed_ = true;
       hold_position_ = g.command.pos;
-      cap_ = 0;
-      changed = true;
+    } else if (!advanced_->lowering()) {
+      // Rising: a higher override only as far as the lift axis could still
+      // land in time from where it is; lowering: none higher than at its start.
+      const double room = 1000.0 * (rest - v * dt) / (v_programmed * (advanced_->landing_s() + 2 * dt));
+      const double highest = machine_.override_max_percent * 10.0;
+      cap_ = std::max(effective, static_cast<int32_t>(std::min(std::isfinite(room) ? room : highest, highest)));
+    } else if (!was_lowering) {
+      cap_ = effective;
     }
+    changed = override_cap(override_value) != effective;
   } else {  // Lifting: over the path parameter q, at tau = q / v_plan
     const double q = std::clamp(since_start_covered(path), 0.0, g.length);
     const MotionState z = g.profile.at(q / g.v_plan);
@@ -155,6 +161,18 @@ bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vec
   const size_t axis = static_cast<size_t>(g.command.axis);
   setpoints[axis] = AxisSetpoint{state_.p, state_.v, state_.a};
   return changed;
+}
+
+// The next range waiting; one with path motion that a short cut ran past
+// before it could begin has nothing left to lift over (the cut's own
+// motion takes the lift axis to where the blocks after it begin).
+void Lift::start_pending(int32_t override_value) {
+  while (!pending_.empty() && !active_) {
+    const Pending next = pending_.front();
+    pending_.pop_front();
+    if (!ranges_[next.range].positioning && ranges_[next.range].passed_by(last_reached_)) continue;
+    start(next.range, override_value, next.covered_at_start);
+  }
 }
 
 // Parked until the path takes the lift axis over from there (a next program).
@@ -170,7 +188,7 @@ bool Lift::holds_path() const {
 }
 
 int32_t Lift::override_cap(int32_t override_value) const {
-  return active_ && cap_ > 0 ? std::min(override_value, cap_) : override_value;
+  return active_ && advanced_ && !landed_ ? std::min(override_value, cap_) : override_value;
 }
 
 bool Lift::forbids_backward(size_t front_block) const {

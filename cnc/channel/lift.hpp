@@ -50,8 +50,9 @@ class Lift {
   bool running() const { return active_ || !pending_.empty(); }
   // The path waits for the lift axis (a range without path motion, a landing before a short cut).
   bool holds_path() const;
-  // LIFT-8: Advanced Lifting accepts no higher override than at its start
-  // while rising, than at the start of lowering while lowering.
+  // LIFT-8: while Advanced Lifting rises, a higher override only as far as
+  // the lift axis could still land in time; while it lowers, none higher
+  // than at the start of lowering.
   int32_t override_cap(int32_t override_value) const;
   // Backward motion would run the path into a range against its geometry:
   // not in a program part at or after a range's start.
@@ -67,6 +68,7 @@ class Lift {
   const LiftRange& range() const { return ranges_[current_]; }
   void start(size_t range_index, int32_t override_value, double covered_at_start);
   void finish();
+  void start_pending(int32_t override_value);
   void apply_parked(std::vector<AxisSetpoint>& setpoints);
   void position_to(double target);
   double since_start_covered(const PathInterpolator& path) const {
@@ -97,7 +99,7 @@ class Lift {
   size_t parked_axis_ = 0;
   MotionState state_;
   std::optional<AdvancedLifting> advanced_;
-  int32_t cap_ = 0;  // LIFT-8, 0.1 %; 0: none
+  int32_t cap_ = 0;  // the highest override an Advanced lift accepts now (LIFT-8), 0.1 %
   // Positioning (no path motion, or landing before a short cut): the profile, and how long it has run.
   bool positioning_ = false;
   bool landed_ = false;  // standing at hold_position_ until the range ends

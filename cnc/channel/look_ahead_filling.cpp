@@ -49,6 +49,7 @@ Corner PathInterpolator::corner_out(size_t k) const {
 }
 
 void PathInterpolator::push(PushedMotion m, bool stop_before) {
+  m.block_stop = stop_before;
   if (m.curve) {
     push_curve_part(m.block, *m.curve);
     return;
@@ -79,6 +80,7 @@ void PathInterpolator::push(PushedMotion m, bool stop_before) {
       first.out = ends_at_stop;
       second.motion = motion_from(m.motion, point);
       second.origin = m.origin + direction_sign() * covered_first;
+      second.block_stop = false;
       second.covered = m.covered - covered_first;
       hand_over(std::move(first), stop_before);
       place_stop(point);
@@ -231,7 +233,7 @@ void PathInterpolator::restart_here(double t) {
     cursors_.last_finished = k;
   }
   for (size_t i = next; i < parts.size(); ++i) {
-    push(parts[i]);
+    push(parts[i], parts[i].block_stop);
     last = parts[i].block;
   }
   if (direction_ == TravelDirection::backward) cursors_.next_backward = last;

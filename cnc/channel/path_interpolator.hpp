@@ -181,6 +181,10 @@ class PathInterpolator {
     std::optional<Corner> out;  // how the path leaves it; none: taken as it is (DDTG-2)
     std::optional<CurvePart> curve;  // a part of a curve (after a turn or a restart on it)
     bool whole_block = false;        // as refill() pushes it: refill() can push it again
+    // The path stands before it for its block's sake (M functions, a dwell,
+    // a lift positioning since the last motion block): restart_here() pushes
+    // it again so (fuzz lift seed 2359: an M16 passed at 18 mm/s).
+    bool block_stop = false;
   };
   PushedMotion whole_block(size_t k) const;
   // The rest of block k from the stop the way the path now travels.

@@ -13,6 +13,8 @@ const MotionState& AdvancedLifting::step(double earliest_end_s) {
     const double landing = position_profile(next, pos_, lim_, SlopeType::trapez).duration();
     if (landing + cycle_s_ <= earliest_end_s) {
       state_ = next;
+      // On POS at rest as its summit (POS at or beyond POS_LIMIT): landed.
+      if (peak_ == pos_ && state_.p == pos_ && state_.v == 0 && state_.a == 0) land_now();
       return state_;
     }
     land_now();
@@ -21,6 +23,11 @@ const MotionState& AdvancedLifting::step(double earliest_end_s) {
   state_ = fall_.at(since_lowering_);
   if (landed()) state_ = MotionState{pos_, 0, 0, 0};
   return state_;
+}
+
+double AdvancedLifting::landing_s() const {
+  return lowering_ ? std::max(fall_.duration() - since_lowering_, 0.0)
+                   : position_profile(state_, pos_, lim_, SlopeType::trapez).duration();
 }
 
 void AdvancedLifting::land_now() {

@@ -23,6 +23,8 @@ class AdvancedLifting {
   // leaves the range's rest).
   void land_now();
   const MotionState& state() const { return state_; }
+  // The fastest landing on POS from where it is now, s.
+  double landing_s() const;
   bool lowering() const { return lowering_; }
   bool landed() const { return lowering_ && since_lowering_ >= fall_.duration(); }
 

@@ -316,22 +316,46 @@ TEST_CASE("LIFT-2 DOWN lowers instead; G91 makes POS and POS_LIMIT relative for 
   rig.require_within_limits();
 }
 
-TEST_CASE("LIFT-8 Advanced Lifting accepts no higher override while it lifts", "[lift][channel]") {
+TEST_CASE("LIFT-8 Advanced Lifting accepts no higher override while it lowers than at the start of lowering",
+          "[lift][channel]") {
   MachineConfig m = test::xyz_lift_machine();
   m.override_max_percent = 150;
   LiftRig rig(cross_block, m);
-  rig.control.override.command_w = 500;  // 50 % at the start
   rig.start();
-  rig.run_until([&] { return rig.hli().block_nr_r == 30; });
+  rig.run_until([&] { return rig.z_peak > 29.9 && rig.axis(Z) < 29.5; });  // lowering
+  REQUIRE(rig.hli().lift_active[Z]);
   rig.control.override.command_w = 1500;
   double fastest = 0;
   rig.run_until([&] {
-    if (rig.hli().lift_active[Z]) fastest = std::max(fastest, rig.hli().path_velocity);
+    if (rig.axis(Z) > 12 + 1e-6) fastest = std::max(fastest, rig.hli().path_velocity);
     return rig.hli().block_nr_r == 70;
   });
-  CHECK(fastest <= 100 * 0.5 + 1e-6);  // F6000 = 100 mm/s at 50 %
+  INFO("fastest while lowering " << fastest << " mm/s");
+  CHECK(fastest <= 100 + 1e-6);  // F6000 at the 100 % in force when lowering began
+  CHECK(rig.axis(Z) == Approx(12));
   rig.run_to_end();
-  CHECK(rig.hli().path_velocity == 0);
+  CHECK(rig.hli().channel_state == ChannelState::program_end);
+  rig.require_within_limits();
+}
+
+TEST_CASE("LIFT-8 Advanced Lifting while rising: a higher override as far as the lift axis can still land in time",
+          "[lift][channel]") {
+  MachineConfig m = test::xyz_lift_machine();
+  m.override_max_percent = 150;
+  // Hovering at 30 over a long range with room to spare: the raise is taken.
+  LiftRig rig(cross_block, m);
+  rig.control.override.command_w = 500;
+  rig.start();
+  rig.run_until([&] { return rig.axis(Z) > 29.99; });
+  rig.control.override.command_w = 1500;
+  double fastest = 0;
+  rig.run_until([&] {
+    fastest = std::max(fastest, rig.hli().path_velocity);
+    return rig.hli().block_nr_r == 70;
+  });
+  CHECK(fastest > 100);
+  CHECK(rig.axis(Z) == Approx(12));  // and it still landed in time
+  rig.run_to_end();
   rig.require_within_limits();
 }
 
