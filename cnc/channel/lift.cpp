@@ -65,14 +65,18 @@ void Lift::position_to(double target) {
   advanced_.reset();
 }
 
+void Lift::land_at_once() {
+  if (!positioning_ && !landed_) position_to(range().command.pos);
+}
+
 void Lift::land_now(PathInterpolator& path) {
   if (!active_) return;
-  if (!positioning_ && !landed_) position_to(range().command.pos);
-  // Where the lift axis stands once this and the ranges without motion
-  // waiting after it have positioned.
+  land_at_once();
+  // The ranges waiting after it land as well (the short cut runs through
+  // them): the lift axis ends on the last one's POS.
   double landing = hold_position_;
-  for (const Pending& next : pending_) {
-    if (!ranges_[next.range].positioning) break;
+  for (Pending& next : pending_) {
+    next.land = true;
     landing = ranges_[next.range].command.pos;
   }
   path.place_axis(static_cast<size_t>(range().command.axis), landing);
@@ -88,7 +92,8 @@ void Lift::stop_now() {
 void Lift::finish() {
   const double pos = range().command.pos;
   // Lifting lands with the path by construction; Advanced Lifting before it.
-  if (advanced_ && !advanced_->landed()) missed_landing_ = true;
+  if (advanced_ && !advanced_->landed() && (std::abs(state_.p - pos) > 1e-9 || std::abs(state_.v) > 1e-9))
+    missed_landing_ = true;
   if (blocks_run_) {
     parked_axis_ = static_cast<size_t>(range().command.axis);
     parked_ = AxisSetpoint{pos, 0, 0};
@@ -163,16 +168,13 @@ bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vec
   return changed;
 }
 
-// The next range waiting; one with path motion that a short cut ran past
-// before it could begin has nothing left to lift over (the cut's own
-// motion takes the lift axis to where the blocks after it begin).
+// The next range waiting; one a short cut runs through lands at once.
 void Lift::start_pending(int32_t override_value) {
-  while (!pending_.empty() && !active_) {
-    const Pending next = pending_.front();
-    pending_.pop_front();
-    if (!ranges_[next.range].positioning && ranges_[next.range].passed_by(last_reached_)) continue;
-    start(next.range, override_value, next.covered_at_start);
-  }
+  if (pending_.empty()) return;
+  const Pending next = pending_.front();
+  pending_.pop_front();
+  start(next.range, override_value, next.covered_at_start);
+  if (next.land) land_at_once();
 }
 
 // Parked until the path takes the lift axis over from there (a next program).

@@ -69,6 +69,7 @@ class Lift {
   void start(size_t range_index, int32_t override_value, double covered_at_start);
   void finish();
   void start_pending(int32_t override_value);
+  void land_at_once();
   void apply_parked(std::vector<AxisSetpoint>& setpoints);
   void position_to(double target);
   double since_start_covered(const PathInterpolator& path) const {
@@ -88,6 +89,7 @@ class Lift {
   struct Pending {
     size_t range = 0;
     double covered_at_start = 0;
+    bool land = false;  // a short cut runs through it: it lands at once
   };
   std::deque<Pending> pending_;
   double covered_at_start_ = 0;

@@ -1,5 +1,8 @@
 #include "advanced_lifting.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "position_profile.hpp"
 
 namespace hil::cnc {
@@ -14,7 +17,9 @@ const MotionState& AdvancedLifting::step(double earliest_end_s) {
     if (landing + cycle_s_ <= earliest_end_s) {
       state_ = next;
       // On POS at rest as its summit (POS at or beyond POS_LIMIT): landed.
-      if (peak_ == pos_ && state_.p == pos_ && state_.v == 0 && state_.a == 0) land_now();
+      if (peak_ == pos_ && std::abs(state_.p - pos_) <= 1e-12 * (1 + std::abs(pos_)) && std::abs(state_.v) <= 1e-9 &&
+          std::abs(state_.a) <= 1e-6)
+        land_now();
       return state_;
     }
     land_now();
