@@ -110,3 +110,17 @@ TEST_CASE("KRN-6 KRN-3 KRN-5 DPS-1 channel fuzz, contour kind: polynomial contou
   CHECK(r.backward > r.runs / 10);
   CHECK(r.short_cuts > r.runs / 10);
 }
+
+TEST_CASE("LIFT-1 LIFT-2 LIFT-3 LIFT-5 LIFT-8 channel fuzz, lift kind: both lift methods under the random PLC keep "
+          "every axis' limits (the lift axis within its overload range) and land on POS",
+          "[fuzz][lift]") {
+  // Lift ranges, single-block lifts, G91, DOWN, POS beyond POS_LIMIT,
+  // #FLUSH, ranges left open to M30, around XY motion, M functions and
+  // dwells; feed hold, override, short cuts, insert stops (docs/LIFT.md).
+  FuzzOptions options;
+  options.kind = ProgramKind::lift;
+  const SeedRange r = run_seeds(1, 1000, options, "lift");
+  CHECK(r.failed == 0);
+  CHECK(r.short_cuts > r.runs / 20);
+  CHECK(r.m_output > r.runs / 10);
+}
