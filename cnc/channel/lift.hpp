@@ -50,6 +50,8 @@ class Lift {
   bool running() const { return active_ || !pending_.empty(); }
   // The path waits for the lift axis (a range without path motion, a landing before a short cut).
   bool holds_path() const;
+  // The lift axis moves on a positioning of its own (after stop_now: braking to rest).
+  bool positioning() const { return active_ && positioning_; }
   // LIFT-8: Advanced Lifting accepts no higher override than at its start
   // while rising, than at the start of lowering while lowering.
   int32_t override_cap(int32_t override_value) const;
