@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 // HLI state fields by name (hli_names.hpp).
 const std::vector<std::string> scenario_keys = {"name", "description", "requirements", "machine", "nc_program",
                                                 "nc_file", "run", "plc", "expect", "expect_events",
-                                                "expect_violations"};
+                                                "expect_violations", "variants", "compare"};
 const std::vector<std::string> run_keys = {"max_time_s", "settle_time_s", "allow_errors"};
 const std::vector<std::string> plc_keys = {"timeline", "m_function_ack_cycles"};
 const std::vector<std::string> step_keys = {"when", "set"};
@@ -339,6 +339,8 @@ namespace {
 // `machine`: the machine already read from its own file, or nullptr.
 Scenario read_scenario(const YAML::Node& root, const MachineConfig* machine) {
   const ConfigMap m(root, "", scenario_keys);
+  for (const char* key : {"variants", "compare"})  // scenario_set.hpp takes them off before this
+    if (m.has(key)) throw ConfigError(std::string(key) + ": a scenario with variants is read by load_scenario_set");
   Scenario s;
   s.name = "scenario";
   m.get("name", s.name);
@@ -407,7 +409,23 @@ Scenario parse_scenario(const YAML::Node& root) {
   }
 }
 
+YAML::Node load_scenario_yaml(const std::string& path) {
+  try {
+    return load_yaml_file(path, "scenario");
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path + ": " + e.what());
+  }
+}
+
 Scenario load_scenario_file(const std::string& path) {
+  try {
+    return load_scenario_node(load_yaml_file(path, "scenario"), path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(path + ": " + e.what());
+  }
+}
+
+Scenario load_scenario_node(YAML::Node root, const std::string& path) {
   const fs::path dir = fs::path(path).parent_path();
   // A file the scenario names: its errors name that file, then the scenario.
   auto named_by_scenario = [&](const std::string& key, auto read) {
@@ -418,7 +436,6 @@ Scenario load_scenario_file(const std::string& path) {
     }
   };
   try {
-    YAML::Node root = load_yaml_file(path, "scenario");
     if (!root.IsMap()) throw ConfigError(path + ": expected a mapping at the top");
     std::optional<MachineConfig> machine;
     if (root["machine"] && root["machine"].IsScalar()) {

@@ -127,6 +127,11 @@ struct Scenario {
 // ("machine.axes[1].slep_max"); an unknown key is an error, with the
 // closest known key (config_error.hpp).
 Scenario load_scenario_file(const std::string& path);
+// The same for a file's top mapping already read (`path` names the file and
+// the folder its `machine:` and `nc_file:` are relative to).
+Scenario load_scenario_node(YAML::Node root, const std::string& path);
+// A scenario file's YAML as it stands (ConfigError if it cannot be read).
+YAML::Node load_scenario_yaml(const std::string& path);
 // Parses a scenario whose machine and NC program are inline (as in a manifest).
 Scenario parse_scenario(const YAML::Node& root);
 std::string to_yaml(const Scenario& scenario);

@@ -20,6 +20,8 @@
 #include "run_log.hpp"
 #include "scenario.hpp"
 #include "scenario_engine.hpp"
+#include "scenario_set.hpp"
+#include "variant_comparison.hpp"
 
 namespace hil::rig {
 namespace {
@@ -54,19 +56,27 @@ std::string rig_url(int port) {
   return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
 }
 
-RunResult run_scenario(const RunOptions& options) {
-  const Scenario scenario = load_scenario_file(options.scenario_file);
-  plc::ScenarioEngine validate_timeline(scenario);  // refuses unknown HLI fields before anything starts
-  for (const AxisConfig& axis : scenario.machine.axes) {  // and drive models that would not be stable
+namespace {
+
+// Refuses, before anything starts, unknown HLI fields and drive models that
+// would not be stable.
+void validate(const Scenario& scenario) {
+  plc::ScenarioEngine validate_timeline(scenario);
+  for (const AxisConfig& axis : scenario.machine.axes) {
     try {
       axis::DriveModel(axis::drive_parameters(axis, scenario.machine.cycle_time_s()));
     } catch (const std::invalid_argument& e) {
       throw ConfigError("machine: axis " + axis.name + ": " + e.what());
     }
   }
+}
 
+// One run of the rig in `run_dir`; `figures` (if given) gets the run's
+// figures for the comparison of variants.
+RunResult run_one(const Scenario& scenario, const std::string& run_dir, const RunOptions& options,
+                  const std::string& variant, VariantFigures* figures) {
   RunResult result;
-  result.run_dir = options.run_dir.empty() ? "runs/" + scenario.name + "-" + timestamp() : options.run_dir;
+  result.run_dir = run_dir;
   fs::create_directories(result.run_dir);
   const fs::path dir = fs::absolute(result.run_dir);
   const std::string resolved = write_resolved(scenario, dir);
@@ -183,6 +193,52 @@ RunResult run_scenario(const RunOptions& options) {
   else out << "offline check: the log has no scenario (HIL_SCENARIO)\n";
   result.report = out.str();
   std::ofstream(dir / "report.txt") << result.report;
+  if (figures) *figures = figures_of(variant, result.passed, log, check ? &*check : nullptr);
+  return result;
+}
+
+}  // namespace
+
+RunResult run_scenario(const RunOptions& options) {
+  const ScenarioSet set = load_scenario_set(options.scenario_file);
+  for (const ScenarioVariant& v : set.variants) {
+    try {
+      validate(v.scenario);
+    } catch (const ConfigError& e) {
+      throw ConfigError(options.scenario_file + ": " + e.what() + (v.name.empty() ? "" : " (variant " + v.name + ")"));
+    }
+  }
+  const std::string run_dir = options.run_dir.empty() ? "runs/" + set.name + "-" + timestamp() : options.run_dir;
+  if (!set.has_variants()) return run_one(set.variants.front().scenario, run_dir, options, "", nullptr);
+
+  // Each variant in a folder of its own, one after the other on the same port.
+  RunResult result;
+  result.run_dir = run_dir;
+  result.passed = true;
+  std::vector<VariantFigures> figures;
+  std::ostringstream runs;
+  for (const ScenarioVariant& v : set.variants) {
+    figures.emplace_back();
+    const RunResult one = run_one(v.scenario, (fs::path(run_dir) / v.name).string(), options, v.name, &figures.back());
+    result.passed = result.passed && one.passed;
+    if (result.log_file.empty()) result.log_file = one.log_file;
+    runs << "=== variant " << v.name << " ===\n" << one.report << '\n';
+  }
+  bool comparisons_hold = true;
+  const std::string checks = check_comparisons(figures, set.comparisons, comparisons_hold);
+  result.passed = result.passed && comparisons_hold;
+  std::ostringstream out;
+  out << "scenario " << set.name << " (" << set.variants.size() << " variants): " << (result.passed ? "PASSED" : "FAILED")
+      << '\n';
+  for (const VariantFigures& f : figures)
+    if (!f.passed) out << "  because variant " << f.name << " failed\n";
+  if (!comparisons_hold) out << "  because a comparison of the variants fails\n";
+  out << "run folder: " << run_dir << " (a folder per variant)\n\n" << runs.str() << "=== the variants side by side ===\n"
+      << format_variants(figures) << checks
+      << draw_comparison_plots(set.name, figures, set.comparisons, run_dir) << '\n'
+      << "scenario " << set.name << ": " << (result.passed ? "PASSED" : "FAILED") << '\n';
+  result.report = out.str();
+  std::ofstream(fs::path(run_dir) / "report.txt") << result.report;
   return result;
 }
 

@@ -87,7 +87,8 @@ void Channel::run_path(const HliControl& control, double t) {
   if (insert_.at_mark() && !programmed_stop_.stopped() && !actions_.waiting()) leave_insert_mark(t);
   interpolate(t);
   const bool standing = path_.standing(t);
-  if (error_stop_.stopping()) error_stop_.update(standing);
+  // The error stop ends when the path and an Advanced Lifting axis braking on its own stand (LIFT-2).
+  if (error_stop_.stopping()) error_stop_.update(standing && !lift_.positioning());
   if (insert_.pending() && standing && hli_.channel_state == ChannelState::active) set_insert_command(t);
   if (ddtg_.pending() && standing && hli_.channel_state == ChannelState::active) start_short_cut(t);
   if (hli_.channel_state == ChannelState::active) change_direction(t, path_.standing(t));

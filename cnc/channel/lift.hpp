@@ -50,6 +50,8 @@ class Lift {
   bool running() const { return active_ || !pending_.empty(); }
   // The path waits for the lift axis (a range without path motion, a landing before a short cut).
   bool holds_path() const;
+  // The lift axis moves on a positioning of its own (after stop_now: braking to rest).
+  bool positioning() const { return active_ && positioning_; }
   // LIFT-8: while Advanced Lifting rises, a higher override only as far as
   // the lift axis could still land in time; while it lowers, none higher
   // than at the start of lowering.

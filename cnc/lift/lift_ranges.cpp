@@ -58,7 +58,9 @@ void plan_lifting(LiftRange& range, const AxisConfig& axis, double factor, doubl
 
 }  // namespace
 
-Limits advanced_lifting_limits(const AxisConfig& axis) { return {axis.v_max, axis.accel_error_limit(), axis.j_max}; }
+Limits advanced_lifting_limits(const AxisConfig& axis) {
+  return {axis.v_max, advanced_lifting_share * axis.accel_error_limit(), axis.j_max};
+}
 
 std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const MachineConfig& machine,
                                            const std::vector<double>& start_position) {

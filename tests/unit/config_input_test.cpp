@@ -10,6 +10,7 @@
 
 #include "config_error.hpp"
 #include "scenario.hpp"
+#include "scenario_set.hpp"
 
 using namespace hil;
 namespace fs = std::filesystem;
@@ -259,7 +260,7 @@ TEST_CASE("RIG-5 every scenario and machine file of the repository loads", "[con
     for (const auto& entry : fs::recursive_directory_iterator(fs::path(HIL_SOURCE_DIR) / folder)) {
       if (entry.path().extension() != ".yaml" || entry.path().filename() == "unknown_control_field.yaml") continue;
       INFO(entry.path());
-      CHECK_NOTHROW(load_scenario_file(entry.path().string()));
+      CHECK_NOTHROW(load_scenario_set(entry.path().string()));  // with or without variants
       ++files;
     }
   for (const auto& entry : fs::directory_iterator(fs::path(HIL_SOURCE_DIR) / "config")) {

@@ -455,3 +455,25 @@ TEST_CASE("LIFT-2 LIFT-3 an insert stop mark in a lift range: Lifting stands wit
     rig.require_within_limits();
   }
 }
+
+TEST_CASE("LIFT-2 RIG-3 a drive error while Advanced Lifting lifts: the channel ends only once the lift axis has "
+          "braked to rest, jerk-limited",
+          "[lift][channel]") {
+  // scenarios/lift/overload_wrong_parameterisation.yaml's program: the error
+  // comes while Z rises fast; the path stops in less time than Z needs.
+  LiftRig rig("N10 G01 X0 Y0 Z10 F6000\nN20 Z[LIFT_START POS=12 POS_LIMIT=100]\nN30 X200\nN40 Z[LIFT_END]\nN50 M30\n",
+              test::xyz_lift_machine());
+  rig.start();
+  rig.run_until([&] { return rig.axis(Z) > 30; });
+  REQUIRE(rig.hli().lift_active[Z]);
+  rig.channel.drive_error("Z", "acceleration P-AXIS-00442");
+  int64_t cycles = 0;
+  while (!rig.channel.finished() && cycles++ < 100000) rig.step();
+  REQUIRE(rig.channel.finished());
+  CHECK(rig.hli().channel_state == ChannelState::error);
+  const size_t n = rig.z.size();
+  REQUIRE(n > 3);
+  CHECK(rig.z[n - 1] == Approx(rig.z[n - 2]).margin(1e-9));  // Z stands when the channel ends
+  CHECK(rig.z[n - 2] == Approx(rig.z[n - 3]).margin(1e-9));
+  rig.require_within_limits();
+}
