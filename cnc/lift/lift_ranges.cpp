@@ -141,11 +141,14 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
     }
     // No contouring into or out of a range: the lift axis is at rest there
     // and joins the path again (TF5200: smoothing suppressed at lift start
-    // and end).
+    // and end); none inside a Lifting range either, whose caps hold for
+    // the blocks' own segments.
     std::optional<size_t> last_in_range;
     for (size_t k = range.start; k <= range.end; ++k) {
       Block& block = blocks[k];
       if (!block.has_motion) continue;
+      if (machine.lift_method == LiftMethod::path_based && block.transition == BlockTransition::contour)
+        block.transition = BlockTransition::standard;
       block.motion.path_v_cap = std::min(block.motion.path_v_cap, v_cap);
       block.motion.path_a_cap = std::min(block.motion.path_a_cap, a_cap);
       block.motion.path_j_cap = std::min(block.motion.path_j_cap, j_cap);

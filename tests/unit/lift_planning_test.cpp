@@ -230,3 +230,34 @@ TEST_CASE("LIFT-1 LIFT-3 LIFT-5: the path preparation finds the ranges and caps 
     CHECK(ranges[0].end == 2);
   }
 }
+
+TEST_CASE("LIFT-3 KRN-6 no contouring into, out of, or (Lifting) inside a lift range", "[lift]") {
+  MachineConfig m = test::xyz_machine();
+  std::vector<Block> blocks;
+  for (int i = 0; i < 5; ++i) {
+    blocks.push_back(line({10.0 * i, 5.0 * (i % 2), 10}, {10.0 * (i + 1), 5.0 * ((i + 1) % 2), 10}, 100));
+    blocks.back().transition = BlockTransition::contour;
+  }
+  blocks[1].lift_start = LiftStart{2, false, 10, 30};
+  blocks[3].lift_end = true;
+  SECTION("Lifting") {
+    m.lift_method = LiftMethod::path_based;
+    std::vector<Block> b = blocks;
+    prepare_lift_ranges(b, m, {0, 0, 10});
+    CHECK(b[0].transition == BlockTransition::standard);  // into the range
+    CHECK(b[1].transition == BlockTransition::standard);  // inside
+    CHECK(b[2].transition == BlockTransition::standard);
+    CHECK(b[3].transition == BlockTransition::standard);  // out of it
+    CHECK(b[4].transition == BlockTransition::contour);
+  }
+  SECTION("Advanced Lifting: inside, the lift axis does not move with the path") {
+    m.lift_method = LiftMethod::time_based;
+    std::vector<Block> b = blocks;
+    prepare_lift_ranges(b, m, {0, 0, 10});
+    CHECK(b[0].transition == BlockTransition::standard);
+    CHECK(b[1].transition == BlockTransition::contour);
+    CHECK(b[2].transition == BlockTransition::contour);
+    CHECK(b[3].transition == BlockTransition::standard);
+    CHECK(b[4].transition == BlockTransition::contour);
+  }
+}
