@@ -11,15 +11,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 // Commanded and actual samples joined by cycle; '?' where one is missing.
 void write_axis_data(const AxisTrace& t, double dt, const std::string& path) {
   std::ofstream out(path);
@@ -68,8 +59,8 @@ void write_hli_data(const HliTrace& h, double dt, const std::string& path) {
 std::string limit_lines(double value, const std::string& color, const std::string& title) {
   if (!(value > 0)) return "";
   const std::string v = std::to_string(value);
-  return ", " + v + " w l dt 2 lc rgb " + quoted(color) + " t " + quoted(title) + ", -" + v +
-         " w l dt 2 lc rgb " + quoted(color) + " notitle";
+  return ", " + v + " w l dt 2 lc rgb " + gnuplot_quoted(color) + " t " + gnuplot_quoted(title) + ", -" + v +
+         " w l dt 2 lc rgb " + gnuplot_quoted(color) + " notitle";
 }
 
 }  // namespace
@@ -93,24 +84,24 @@ PlotFiles write_plot_files(const RunLog& log, const CheckReport& report, const s
     const std::string data = "axis_" + a.name + ".tsv", image = "axis_" + a.name + ".png";
     write_axis_data(log.axes[i], dt, (fs::path(dir) / data).string());
     files.images.push_back((fs::path(dir) / image).string());
-    gp << "\nset output " << quoted(image) << "\nunset object\n";
+    gp << "\nset output " << gnuplot_quoted(image) << "\nunset object\n";
     int shaded = 0;
     for (const Violation& v : report.violations)
       if (v.axis == a.name)
         gp << "set object " << ++shaded << " rect from " << v.time_s - dt / 2 << ", graph 0 to "
            << v.end_time_s + dt / 2 << ", graph 1 fc rgb \"#ffb0b0\" fs solid 0.6 noborder behind\n";
     gp << "set multiplot layout 4,1 title "
-       << quoted(run_name + ": axis " + a.name + (shaded ? " (limit violations shaded red)" : "")) << "\n"
+       << gnuplot_quoted(run_name + ": axis " + a.name + (shaded ? " (limit violations shaded red)" : "")) << "\n"
        << "set ylabel \"position [mm]\"\n"
-       << "plot " << quoted(data) << " u 1:2 w l lw 2 t \"commanded\", '' u 1:5 w l t \"actual\"\n"
+       << "plot " << gnuplot_quoted(data) << " u 1:2 w l lw 2 t \"commanded\", '' u 1:5 w l t \"actual\"\n"
        << "set ylabel \"velocity [mm/s]\"\n"
-       << "plot " << quoted(data) << " u 1:3 w l lw 2 t \"commanded\", '' u 1:6 w l t \"actual\""
+       << "plot " << gnuplot_quoted(data) << " u 1:3 w l lw 2 t \"commanded\", '' u 1:6 w l t \"actual\""
        << limit_lines(a.v_max, "#808080", "v_max") << limit_lines(a.velocity_error_limit(), "red", "P-AXIS-00440")
        << "\nset ylabel \"acceleration [mm/s^2]\"\n"
-       << "plot " << quoted(data) << " u 1:4 w l lw 2 t \"commanded\", '' u 1:7 w l t \"actual\""
+       << "plot " << gnuplot_quoted(data) << " u 1:4 w l lw 2 t \"commanded\", '' u 1:7 w l t \"actual\""
        << limit_lines(a.a_max, "#808080", "a_max") << limit_lines(a.accel_error_limit(), "red", "P-AXIS-00442")
        << "\nset ylabel \"following error [mm]\"\n"
-       << "plot " << quoted(data) << " u 1:8 w l t \"following error\""
+       << "plot " << gnuplot_quoted(data) << " u 1:8 w l t \"following error\""
        << limit_lines(a.slep_max, "red", "P-AXIS-00168 slep_max") << "\nunset multiplot\n";
   }
   const int ix = machine.axis_index("X"), iy = machine.axis_index("Y");
@@ -118,7 +109,7 @@ PlotFiles write_plot_files(const RunLog& log, const CheckReport& report, const s
     write_xy_data(log.axes[ix], log.axes[iy], (fs::path(dir) / "xy.tsv").string());
     files.images.push_back((fs::path(dir) / "xy.png").string());
     gp << "\nset output \"xy.png\"\nunset object\nset terminal pngcairo noenhanced size 1000,1000 font \",10\"\n"
-       << "set title " << quoted(run_name + ": contour in the XY plane") << "\nset size ratio -1\n"
+       << "set title " << gnuplot_quoted(run_name + ": contour in the XY plane") << "\nset size ratio -1\n"
        << "set xlabel \"X [mm]\"\nset ylabel \"Y [mm]\"\n"
        << "plot \"xy.tsv\" u 1:2 w l lw 2 t \"commanded\", '' u 3:4 w l t \"actual\"\n"
        << "set size noratio\nunset title\nset xlabel \"t [s]\"\n"
@@ -127,7 +118,7 @@ PlotFiles write_plot_files(const RunLog& log, const CheckReport& report, const s
   write_hli_data(log.hli, dt, (fs::path(dir) / "hli.tsv").string());
   files.images.push_back((fs::path(dir) / "path.png").string());
   gp << "\nset output \"path.png\"\nunset object\n"
-     << "set multiplot layout 4,1 title " << quoted(run_name + ": path and HLI") << "\n"
+     << "set multiplot layout 4,1 title " << gnuplot_quoted(run_name + ": path and HLI") << "\n"
      << "set ylabel \"path velocity [mm/s]\"\nplot \"hli.tsv\" u 1:2 w l t \"path_velocity\"\n"
      << "set ylabel \"block_nr_r\"\nplot \"hli.tsv\" u 1:3 w steps t \"block_nr_r\"\n"
      << "set ylabel \"dist_prog_start [mm]\"\nplot \"hli.tsv\" u 1:4 w l t \"dist_prog_start\"\n"
@@ -135,6 +126,15 @@ PlotFiles write_plot_files(const RunLog& log, const CheckReport& report, const s
      << "set yrange [-0.5:3.5]\nplot \"hli.tsv\" u 1:5 w steps t \"channel_state\"\n"
      << "unset multiplot\n";
   return files;
+}
+
+std::string gnuplot_quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
 }
 
 }  // namespace hil::logger

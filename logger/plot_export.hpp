@@ -21,4 +21,7 @@ struct PlotFiles {
 // log has no manifest (nothing to name the axes and limits).
 PlotFiles write_plot_files(const RunLog& log, const CheckReport& report, const std::string& dir);
 
+// A text as a gnuplot string literal ("..", with \" and \\ escaped).
+std::string gnuplot_quoted(const std::string& text);
+
 }  // namespace hil::logger

@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "plot_export.hpp"
 #include "process.hpp"
 
 namespace hil::rig {
@@ -31,15 +32,6 @@ const VariantFigures* variant_named(const std::vector<VariantFigures>& variants,
   for (const VariantFigures& v : variants)
     if (v.name == name) return &v;
   return nullptr;
-}
-
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
 }
 
 }  // namespace
@@ -194,18 +186,18 @@ std::string draw_comparison_plots(const std::string& scenario_name, const std::v
   for (const std::string& axis : axes) {
     const std::string image = "compare_" + axis + ".png";
     images += (images.empty() ? "" : ", ") + image;
-    gp << "\nset output " << quoted(image) << "\nset multiplot layout 2,1 title "
-       << quoted(scenario_name + ": commanded " + axis + " of each variant") << '\n';
+    gp << "\nset output " << logger::gnuplot_quoted(image) << "\nset multiplot layout 2,1 title "
+       << logger::gnuplot_quoted(scenario_name + ": commanded " + axis + " of each variant") << '\n';
     for (const char* x : {"t", "path"}) {
       const bool over_time = std::string(x) == "t";
-      gp << "set xlabel " << quoted(over_time ? "t [s]" : "dist_prog_start [mm]") << "\nset ylabel "
-         << quoted(axis + " [mm]") << "\nplot ";
+      gp << "set xlabel " << logger::gnuplot_quoted(over_time ? "t [s]" : "dist_prog_start [mm]") << "\nset ylabel "
+         << logger::gnuplot_quoted(axis + " [mm]") << "\nplot ";
       bool first = true;
       for (const VariantFigures& v : variants) {
         const int a = axis_of(v, axis);
         if (a < 0) continue;
-        gp << (first ? "" : ", ") << quoted("compare_" + v.name + ".tsv") << " u " << (over_time ? 1 : 2) << ':'
-           << a + 3 << " w l lw 2 t " << quoted(v.name + " (max " + num(v.max_mm[a]) + ")");
+        gp << (first ? "" : ", ") << logger::gnuplot_quoted("compare_" + v.name + ".tsv") << " u " << (over_time ? 1 : 2) << ':'
+           << a + 3 << " w l lw 2 t " << logger::gnuplot_quoted(v.name + " (max " + num(v.max_mm[a]) + ")");
         first = false;
       }
       gp << '\n';
