@@ -32,25 +32,39 @@ CommandArguments read_command_arguments(const std::string& command, const std::s
   if (rest.front() != '[' || rest.back() != ']' || rest.find(']') != rest.size() - 1)
     throw LineError{command + ": parameters go in one [..], not '" + rest + "'"};
   out.has_list = true;
-  std::string items;
-  for (char ch : rest.substr(1, rest.size() - 2)) {
-    if (ch == ',') ch = ' ';
-    if (ch == ' ' && !items.empty() && items.back() == '=') continue;
-    if (ch == '=' && !items.empty() && items.back() == ' ') items.pop_back();
-    items += ch;
+  std::string items = rest.substr(1, rest.size() - 2);
+  std::replace(items.begin(), items.end(), ',', ' ');
+  out.parameters = read_parameter_items(command, items);
+  return out;
+}
+
+std::vector<CommandParameter> read_parameter_items(const std::string& command, const std::string& items) {
+  // Blanks around '=' dropped; a blank inside brackets marked so that it
+  // does not separate.
+  constexpr char kept_blank = '\x01';
+  std::string text;
+  int depth = 0;
+  for (const char c : items) {
+    if (c == '[') ++depth;
+    if (c == ']') --depth;
+    if (depth == 0 && c == ' ' && !text.empty() && text.back() == '=') continue;
+    if (depth == 0 && c == '=' && !text.empty() && text.back() == ' ') text.pop_back();
+    text += c == ' ' && depth > 0 ? kept_blank : c;
   }
-  for (size_t at = 0; at < items.size();) {
-    const size_t begin = items.find_first_not_of(' ', at);
+  std::vector<CommandParameter> parameters;
+  for (size_t at = 0; at < text.size();) {
+    const size_t begin = text.find_first_not_of(' ', at);
     if (begin == std::string::npos) break;
-    const size_t end = std::min(items.find(' ', begin), items.size());
-    const std::string item = items.substr(begin, end - begin);
+    const size_t end = std::min(text.find(' ', begin), text.size());
+    std::string item = text.substr(begin, end - begin);
+    std::replace(item.begin(), item.end(), kept_blank, ' ');
     const size_t eq = item.find('=');
     if (eq == 0) throw LineError{command + ": '=' without a parameter name"};
-    out.parameters.push_back(eq == std::string::npos ? CommandParameter{item, std::nullopt}
-                                                     : CommandParameter{item.substr(0, eq), item.substr(eq + 1)});
+    parameters.push_back(eq == std::string::npos ? CommandParameter{item, std::nullopt}
+                                                 : CommandParameter{item.substr(0, eq), item.substr(eq + 1)});
     at = end;
   }
-  return out;
+  return parameters;
 }
 
 }  // namespace hil::cnc::decoding

@@ -27,4 +27,11 @@ struct CommandArguments {
 // second list.
 CommandArguments read_command_arguments(const std::string& command, const std::string& arguments);
 
+// The items of a parameter list without its brackets (an axis command's
+// LIFT_START DOWN POS=12 POS_LIMIT=100): separated by blanks; blanks
+// around '=' belong to it; a blank inside [..] (a value's expression,
+// POS=[P1 + 2]) separates nothing. Throws LineError naming `command` for
+// a '=' without a name.
+std::vector<CommandParameter> read_parameter_items(const std::string& command, const std::string& items);
+
 }  // namespace hil::cnc::decoding

@@ -1,8 +1,8 @@
 #include "lift_commands.hpp"
 
-#include <sstream>
 #include <stdexcept>
 
+#include "command_parameters.hpp"
 #include "motion_target.hpp"
 #include "value_ranges.hpp"
 
@@ -32,36 +32,6 @@ void check_one_per_block(const Block& block, const std::string& name) {
   if (block.lift_start || block.lift_end) throw LineError{name + ": one lift command per block"};
 }
 
-// One item of [LIFT_START DOWN G91 POS=12 POS_LIMIT=100]: a keyword, or
-// KEY=value (blanks around '=' belong to it; a value with blanks goes in
-// square brackets, POS=[P1 + 2]).
-struct Item {
-  std::string key;
-  std::optional<std::string> value;
-};
-
-std::vector<Item> items_of(const std::string& arguments) {
-  std::string text;
-  int depth = 0;
-  for (const char c : arguments) {
-    if (c == '[') ++depth;
-    if (c == ']') --depth;
-    if (depth == 0 && c == ' ' && !text.empty() && text.back() == '=') continue;
-    if (depth == 0 && c == '=' && !text.empty() && text.back() == ' ') text.pop_back();
-    text += c == ' ' && depth > 0 ? '\x01' : c;  // a blank inside brackets does not separate items
-  }
-  std::vector<Item> items;
-  std::istringstream in(text);
-  for (std::string item; in >> item;) {
-    for (char& c : item)
-      if (c == '\x01') c = ' ';
-    const size_t eq = item.find('=');
-    if (eq == std::string::npos) items.push_back({item, std::nullopt});
-    else items.push_back({item.substr(0, eq), item.substr(eq + 1)});
-  }
-  return items;
-}
-
 // Z[LIFT_START ..] / Z[LIFT ..]: the range's LiftStart, positions absolute.
 LiftStart lift_start_of(int axis, const std::string& arguments, const DecoderState& state, const std::string& name) {
   check_enabled(state, name);
@@ -70,7 +40,7 @@ LiftStart lift_start_of(int axis, const std::string& arguments, const DecoderSta
   if (config.modulo) throw LineError{name + ": a modulo axis cannot be a lift axis"};
   bool down = false, relative = false, dimension = false;
   std::optional<double> pos, pos_limit;
-  for (const Item& item : items_of(arguments)) {
+  for (const CommandParameter& item : read_parameter_items(name, arguments)) {
     const std::string& key = item.key;
     if (key == "DOWN" || key == "G90" || key == "G91") {
       if (item.value) throw LineError{name + ": " + key + " takes no value"};
