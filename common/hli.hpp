@@ -77,6 +77,18 @@ struct InsertCmdUnit {
 struct InsertCmdUnitState {
   HIL_RECORD(InsertCmdUnitState, HLI_INSERT_CMD_UNIT_STATE_FIELDS)
 };
+// The block search unit (DPS-3).
+struct BlockSearchCommand {
+  HIL_RECORD(BlockSearchCommand, HLI_BLOCK_SEARCH_COMMAND_FIELDS)
+};
+struct BlockSearchState {
+  HIL_RECORD(BlockSearchState, HLI_BLOCK_SEARCH_STATE_FIELDS)
+};
+using ControlUnitBlockSearch = ControlUnit<BlockSearchCommand>;
+using ControlUnitBlockSearchState = ControlUnitStateOf<BlockSearchState>;
+namespace block_search_state {
+constexpr int32_t none = 0, repositioning = 1, continued = 2, error = 3;
+}
 
 // Override values are in 0.1 % (1000 = 100 %).
 constexpr int32_t override_full = 1000;

@@ -42,6 +42,20 @@
   X(bool, semaphor_rw) /* the CNC's side: FALSE once it has read command_w */ \
   X(InsertCmdState, state_r)
 
+// The block search unit (DPS-3, TF5200_distance_from_program_start.txt):
+// set before program start; the start then runs the search and continues
+// the program there (docs/BLOCK_SEARCH.md).
+#define HLI_BLOCK_SEARCH_COMMAND_FIELDS(X)                                                 \
+  X(uint32_t, type)      /* UDINT: 1 at the block's start, 4 block number + covered distance */ \
+  X(uint32_t, block_nr)  /* UDINT: N number of the block searched (its first in the program) */ \
+  X(double, distance)    /* LREAL, 0.1 um: dist_prog_start at the continuation point (type 4) */
+#define HLI_BLOCK_SEARCH_STATE_FIELDS(X)                                                          \
+  X(int32_t, state)  /* 0 none, 1 repositioning, 2 continued, 3 error (the program did not start) */ \
+  X(bool, continuation_moved) /* the distance lay before the block: it continues at its start */  \
+  X(uint32_t, continuation_block_nr)  /* N of the block the continuation point lies in */          \
+  X(int64_t, continuation_nc_line)    /* its NC program line */                                    \
+  X(double, continuation_distance)    /* 0.1 um: dist_prog_start at the continuation point */
+
 // PLC -> CNC (hli_control_t), applied by the CNC one cycle later (RIG-6).
 #define HLI_CONTROL_UNITS(X)                                                           \
   /* Rising edge of command_w while enable_w starts the NC program. */                 \
@@ -65,7 +79,12 @@
   /* Rising edge of command_w while enable_w leaves an M00 / M01 stop (ISC-5). */      \
   X(ControlUnitBool, continue_motion)                                                  \
   /* command_w while enable_w: M01 stops (optional stop, ISC-5). */                    \
-  X(ControlUnitBool, m01_stop_enable)
+  X(ControlUnitBool, m01_stop_enable)                                                  \
+  /* Rising edge of command_w while enable_w, the path standing: the program is */     \
+  /* aborted and the channel is READY for a new start (docs/BLOCK_SEARCH.md). */         \
+  X(ControlUnitBool, reset)                                                            \
+  /* enable_w at the program start's edge: the start searches command_w (DPS-3). */     \
+  X(ControlUnitBlockSearch, block_search)
 
 // CNC -> PLC (hli_state_t), once per cycle. HLI lengths in 0.1 um.
 // block_nr_r and block_count_r are UDINT in the texts: int64_t holds them all.
@@ -97,4 +116,6 @@
   X(ControlUnitState, backward_motion) /* state_r: moving backward */                \
   X(InsertCmdUnitState, insert_cmd)    /* ISC-1, ISC-2 */                            \
   X(ControlUnitState, continue_motion) /* state_r: the edge was taken */             \
-  X(ControlUnitState, m01_stop_enable) /* state_r: M01 stops */
+  X(ControlUnitState, m01_stop_enable) /* state_r: M01 stops */               \
+  X(ControlUnitState, reset)           /* state_r: the edge was taken */       \
+  X(ControlUnitBlockSearchState, block_search) /* DPS-3 */

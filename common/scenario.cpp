@@ -45,7 +45,7 @@ std::vector<std::string> with_hli_state_fields(std::vector<std::string> keys) {
 }
 const std::vector<std::string>& condition_keys() {
   static const std::vector<std::string> keys = with_hli_state_fields(
-      {"cycle", "time_s", "block_nr_r", "block_count_r", "dist_prog_start_mm", "channel_state",
+      {"cycle", "time_s", "block_nr_r", "block_count_r", "dist_prog_start_mm", "path_standing", "channel_state",
        "delete_distance_to_go_active_r", "m_function_nr_r"});
   return keys;
 }
@@ -177,6 +177,7 @@ Condition parse_condition(const YAML::Node& node, const std::string& where) {
     else if (key == "block_nr_r") c.block_nr_r = block_number(m, key);
     else if (key == "block_count_r") c.block_count_r = block_number(m, key);
     else if (key == "dist_prog_start_mm") c.dist_prog_start_mm = m.number(key);
+    else if (key == "path_standing") c.path_standing = config_bool(item.second, m.path(key));
     else if (key == "channel_state") c.channel_state = channel_state_of(item.second, m.path(key));
     else if (key == "delete_distance_to_go_active_r")
       c.delete_distance_to_go_active_r = config_bool(item.second, m.path(key));
@@ -286,6 +287,7 @@ bool Condition::holds(const HliState& s, double cycle_time_s) const {
   if (block_nr_r && s.block_nr_r != *block_nr_r) return false;
   if (block_count_r && s.block_count_r != *block_count_r) return false;
   if (dist_prog_start_mm && s.dist_prog_start / hli_units_per_mm < *dist_prog_start_mm) return false;
+  if (path_standing && (s.path_velocity == 0) != *path_standing) return false;
   if (channel_state && s.channel_state != *channel_state) return false;
   if (delete_distance_to_go_active_r && s.delete_distance_to_go_active_r != *delete_distance_to_go_active_r)
     return false;
@@ -308,6 +310,7 @@ std::string Condition::describe() const {
   if (block_nr_r) out << sep << "block_nr_r=" << *block_nr_r, sep = " ";
   if (block_count_r) out << sep << "block_count_r=" << *block_count_r, sep = " ";
   if (dist_prog_start_mm) out << sep << "dist_prog_start_mm>=" << *dist_prog_start_mm, sep = " ";
+  if (path_standing) out << sep << "path_standing=" << (*path_standing ? "true" : "false"), sep = " ";
   if (channel_state) out << sep << "channel_state=" << to_string(*channel_state), sep = " ";
   if (delete_distance_to_go_active_r)
     out << sep << "delete_distance_to_go_active_r=" << (*delete_distance_to_go_active_r ? "true" : "false"), sep = " ";

@@ -23,6 +23,7 @@ struct Condition {
   std::optional<int64_t> block_nr_r;          // == value
   std::optional<int64_t> block_count_r;       // == value
   std::optional<double> dist_prog_start_mm;   // covered distance >= value
+  std::optional<bool> path_standing;          // path_velocity == 0 (true) or > 0 (false)
   std::optional<ChannelState> channel_state;  // == value
   std::optional<bool> delete_distance_to_go_active_r;  // == value
   std::optional<int32_t> m_function_nr_r;     // this M function waits for acknowledgement

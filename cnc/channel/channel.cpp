@@ -9,9 +9,9 @@
 namespace hil::cnc {
 
 Channel::Channel(MachineConfig machine, std::string nc_program)
-    : machine_(std::move(machine)), nc_program_(std::move(nc_program)), path_(machine_, *this),
-      feed_(machine_.override_max_percent), ddtg_(machine_), backward_(machine_), insert_(machine_),
-      lift_(machine_), setpoints_(path_.setpoints()) {
+    : machine_(std::move(machine)), nc_program_(std::move(nc_program)), path_(std::in_place, machine_, static_cast<PathObserver&>(*this)),
+      feed_(machine_.override_max_percent), ddtg_(machine_), backward_(machine_), insert_(std::in_place, machine_),
+      lift_(std::in_place, machine_), setpoints_(path_->setpoints()) {
   for (const AxisConfig& axis : machine_.axes) hli_.axis_name.push_back(axis.name);
   hli_.axis_position_r.assign(machine_.axes.size(), 0);
   hli_.lift_active.assign(machine_.axes.size(), false);
@@ -37,17 +37,20 @@ void Channel::apply_control(const HliControl& control) {
   const bool backward_changed = backward_.apply(control.backward_motion, hli_, events_);
   if (feed_changed || backward_changed) update_hold();
   if (ddtg_.apply(control, hli_.channel_state == ChannelState::active, hli_, events_)) update_hold();
-  if (insert_.take(control.insert_cmd, hli_)) update_hold();
+  if (insert_->take(control.insert_cmd, hli_)) update_hold();
   if (programmed_stop_.apply(control, hli_)) {  // continue motion (ISC-5)
-    if (insert_.at_mark()) leave_insert_mark(time_s());
+    if (insert_->at_mark()) leave_insert_mark(time_s());
     update_hold();
   }
-  apply_program_start(control.program_start);
+  apply_reset(control.reset);
+  apply_program_start(control);
 }
 
 // KRN-4: control units act on the rising edge of command_w while enable_w.
-void Channel::apply_program_start(const ControlUnitBool& start) {
+void Channel::apply_program_start(const HliControl& control) {
+  const ControlUnitBool& start = control.program_start;
   hli_.program_start.request_r = start.command_w && start.enable_w;
+  hli_.block_search.request_r = control.block_search.enable_w;
   if (!program_start_(start.command_w) || !start.enable_w) return;
   if (hli_.channel_state != ChannelState::ready) {
     Event ignored;
@@ -56,10 +59,50 @@ void Channel::apply_program_start(const ControlUnitBool& start) {
     events_.raise(ignored);
     return;
   }
-  start_program();
+  start_program(control.block_search);
 }
 
-void Channel::start_program() {
+// The path stands: the program is aborted there, every unit of its run
+// starts anew; the PLC's levels (feed hold, override) stay.
+void Channel::apply_reset(const ControlUnitBool& reset) {
+  hli_.reset.request_r = reset.command_w && reset.enable_w;
+  hli_.reset.state_r = false;
+  if (!reset_(reset.command_w) || !reset.enable_w) return;
+  if (hli_.channel_state == ChannelState::active || error_stop_.stopping()) {
+    if (!path_->standing(time_s()) || error_stop_.stopping() || lift_->positioning()) {
+      Event ignored = events_.at_block(Severity::warning, "reset ignored: the path moves (stop it first, feed hold)");
+      events_.raise(ignored);
+      return;
+    }
+  }
+  begin_program_run();
+  hli_.reset.state_r = true;
+}
+
+void Channel::begin_program_run() {
+  const std::vector<AxisSetpoint> standing = setpoints_;
+  path_.emplace(machine_, static_cast<PathObserver&>(*this));
+  for (size_t i = 0; i < standing.size(); ++i) path_->place_axis(i, standing[i].position);
+  setpoints_ = path_->setpoints();
+  insert_.emplace(machine_);
+  lift_.emplace(machine_);
+  ddtg_.abort();
+  actions_.abort();
+  programmed_stop_.abort();
+  distance_ = DistanceFromProgramStart();
+  error_stop_ = DriveErrorStop();
+  continuation_block_.reset();
+  decode_failed_ = false;
+  backward_refused_ = false;
+  hli_.channel_state = ChannelState::ready;
+  hli_.block_search.state_r = BlockSearchState();
+  hli_.dist_prog_start = 0;
+  hli_.path_velocity = 0;
+  hli_.m_function_request_r = false;
+  update_hold();
+}
+
+void Channel::start_program(const ControlUnitBlockSearch& search) {
   std::vector<double> start_position;  // a lift axis parked by the last program's lift included
   for (const AxisSetpoint& setpoint : setpoints_) start_position.push_back(setpoint.position);
   DecodedProgram program = decode_program(nc_program_, machine_, start_position);
@@ -69,14 +112,19 @@ void Channel::start_program() {
   }
   std::vector<Event> warnings;
   std::vector<Block> blocks = apply_m_pre_output(std::move(program.blocks), machine_, warnings);
-  lift_.prepare(blocks, start_position);
-  path_.load(std::move(blocks));
-  backward_refused_ = false;
   for (Event& warning : warnings) events_.raise(std::move(warning));
+  hli_.block_search.state_r = BlockSearchState();
+  if (search.enable_w && !search_continuation(search, blocks, start_position)) {
+    decode_failed_ = false;  // the program did not start: the channel stays READY
+    return;
+  }
+  lift_->prepare(blocks, start_position);
+  path_->load(std::move(blocks));
+  backward_refused_ = false;
   start_cycle_ = cycle_;
   hli_.channel_state = ChannelState::active;
-  if (insert_.pending()) insert_.set_pending(path_, 0, distance_mm(), events_);  // commanded before the start (ISC-6)
-  path_.go_on_from_standstill(0);
+  if (insert_->pending()) insert_->set_pending(*path_, 0, distance_mm(), events_);  // commanded before the start (ISC-6)
+  path_->go_on_from_standstill(0);
   update_hold();
   interpolate(0);
 }
@@ -84,30 +132,58 @@ void Channel::start_program() {
 void Channel::run_path(const HliControl& control, double t) {
   if (actions_.run(control.m_function_ack, t, hli_)) update_hold();
   // M<n> of an insert stop mark acknowledged (ISC-5).
-  if (insert_.at_mark() && !programmed_stop_.stopped() && !actions_.waiting()) leave_insert_mark(t);
+  if (insert_->at_mark() && !programmed_stop_.stopped() && !actions_.waiting()) leave_insert_mark(t);
   interpolate(t);
-  const bool standing = path_.standing(t);
+  const bool standing = path_->standing(t);
   // The error stop ends when the path and an Advanced Lifting axis braking on its own stand (LIFT-2).
-  if (error_stop_.stopping()) error_stop_.update(standing && !lift_.positioning());
-  if (insert_.pending() && standing && hli_.channel_state == ChannelState::active) set_insert_command(t);
+  if (error_stop_.stopping()) error_stop_.update(standing && !lift_->positioning());
+  if (insert_->pending() && standing && hli_.channel_state == ChannelState::active) set_insert_command(t);
   if (ddtg_.pending() && standing && hli_.channel_state == ChannelState::active) start_short_cut(t);
-  if (hli_.channel_state == ChannelState::active) change_direction(t, path_.standing(t));
+  if (hli_.channel_state == ChannelState::active) change_direction(t, path_->standing(t));
 }
 
-double Channel::distance_mm() const { return distance_.value_mm(path_.front_covered()); }
+bool Channel::search_continuation(const ControlUnitBlockSearch& search, std::vector<Block>& blocks,
+                                  const std::vector<double>& start_position) {
+  BlockSearchState& state = hli_.block_search.state_r;
+  BlockSearchRequest request;
+  request.type = static_cast<int>(search.command_w.type);
+  request.block_nr = search.command_w.block_nr;
+  request.distance_mm = search.command_w.distance / hli_units_per_mm;
+  BlockSearchOutcome outcome = search_block(blocks, request, machine_);
+  if (!outcome.continuation) {
+    if (outcome.error) events_.raise(*outcome.error);
+    state.state = block_search_state::error;
+    return false;
+  }
+  const Continuation& c = *outcome.continuation;
+  if (c.warning) events_.raise(*c.warning);
+  const Block& block = blocks[c.block];
+  state.state = block_search_state::repositioning;
+  state.continuation_moved = c.warning.has_value();
+  state.continuation_block_nr = static_cast<uint32_t>(block.block_nr);
+  state.continuation_nc_line = block.nc_line;
+  state.continuation_distance = c.distance_mm * hli_units_per_mm;
+  const size_t rest = blocks.size() - c.block;
+  blocks = continued_program(blocks, c, start_position, machine_);
+  continuation_block_ = blocks.size() - rest;
+  distance_.preset(c.distance_mm, c.distance_counting);
+  return true;
+}
+
+double Channel::distance_mm() const { return distance_.value_mm(path_->front_covered()); }
 
 // ISC-6: the path stands (stopped briefly if it moved): the mark is set,
 // and the path goes on to it; one at the current distance is reached now.
 void Channel::set_insert_command(double t) {
-  if (insert_.set_pending(path_, t, distance_mm(), events_)) path_.go_on_from_standstill(t);
+  if (insert_->set_pending(*path_, t, distance_mm(), events_)) path_->go_on_from_standstill(t);
   update_hold();
-  if (insert_.reached(path_, t)) reach_insert_mark(t);
+  if (insert_->reached(*path_, t)) reach_insert_mark(t);
 }
 
 // ISC-5, ISC-7: the mark's M function.
 void Channel::reach_insert_mark(double t) {
-  insert_.begin_stop();
-  const InsertCommand& c = insert_.command();
+  insert_->begin_stop();
+  const InsertCommand& c = insert_->command();
   if (c.m_function_nr <= 1) {
     if (!programmed_stop_.begin(c.m_function_nr)) {  // M01 while m01_stop_enable is not set: on
       leave_insert_mark(t);
@@ -120,24 +196,24 @@ void Channel::reach_insert_mark(double t) {
 }
 
 void Channel::leave_insert_mark(double t) {
-  if (insert_.leave(path_, t, distance_mm())) path_.go_on_from_standstill(t);
+  if (insert_->leave(*path_, t, distance_mm())) path_->go_on_from_standstill(t);
   update_hold();
 }
 
 void Channel::interpolate(double t) {
-  const PathProgress progress = path_.interpolate(t);
-  if (progress == PathProgress::all_blocks_run || progress == PathProgress::invalid_block) lift_.all_blocks_run();
-  setpoints_ = path_.setpoints();
-  if (lift_.update(path_, hli_.override.state_r, setpoints_)) update_hold();
-  if (lift_.take_missed_landing()) {
+  const PathProgress progress = path_->interpolate(t);
+  if (progress == PathProgress::all_blocks_run || progress == PathProgress::invalid_block) lift_->all_blocks_run();
+  setpoints_ = path_->setpoints();
+  if (lift_->update(*path_, hli_.override.state_r, setpoints_)) update_hold();
+  if (lift_->take_missed_landing()) {
     events_.raise(events_.at_block(Severity::error, "lift function: the path left the lift range before the lift "
                                                     "axis had landed on POS"));
     hli_.channel_state = ChannelState::error;
   }
-  hli_.dist_prog_start = distance_.value_mm(path_.front_covered()) * hli_units_per_mm;
-  hli_.path_velocity = path_.path_velocity();
+  hli_.dist_prog_start = distance_.value_mm(path_->front_covered()) * hli_units_per_mm;
+  hli_.path_velocity = path_->path_velocity();
   if (progress == PathProgress::invalid_block) {
-    const Block& block = path_.blocks()[*path_.invalid_block()];
+    const Block& block = path_->blocks()[*path_->invalid_block()];
     Event e = events_.at_block(Severity::error, "the motion of line " + std::to_string(block.nc_line) +
                                                     " has a length or limit that is not a finite number; "
                                                     "the path stops before it; program aborted");
@@ -154,57 +230,57 @@ void Channel::interpolate(double t) {
   if (progress == PathProgress::reached_contour_start)
     events_.raise(events_.at_block(Severity::warning, "backward motion reached the start of the stored contour "
                                                       "(program start, or P-STUP-00033 full); it stands there"));
-  if (hli_.channel_state == ChannelState::active && insert_.reached(path_, t)) reach_insert_mark(t);
+  if (hli_.channel_state == ChannelState::active && insert_->reached(*path_, t)) reach_insert_mark(t);
   // The program ends once its last M functions and dwells are done, and no
   // stop (M00, M01, an insert stop mark at the end) holds it; a decode
   // error stops the channel after every block decoded correctly.
   if (progress == PathProgress::all_blocks_run && !actions_.waiting() && !programmed_stop_.stopped() &&
-      !insert_.at_mark() && !insert_.pending() && !lift_.running() && hli_.channel_state != ChannelState::error)
+      !insert_->at_mark() && !insert_->pending() && !lift_->running() && hli_.channel_state != ChannelState::error)
     hli_.channel_state = decode_failed_ ? ChannelState::error : ChannelState::program_end;
   if (hli_.channel_state == ChannelState::program_end || hli_.channel_state == ChannelState::error)
-    insert_.program_end();
+    insert_->program_end();
 }
 
 void Channel::start_short_cut(double t) {
-  lift_.land_now(path_);  // in a lift range: the lift axis lands first, the path waits
-  insert_.before_short_cut(path_, t, distance_mm());
-  const DeleteDistanceToGo::Outcome outcome = ddtg_.start_short_cut(path_, t, events_);
+  lift_->land_now(*path_);  // in a lift range: the lift axis lands first, the path waits
+  insert_->before_short_cut(*path_, t, distance_mm());
+  const DeleteDistanceToGo::Outcome outcome = ddtg_.start_short_cut(*path_, t, events_);
   update_hold();
   switch (outcome) {
-    case DeleteDistanceToGo::Outcome::short_cut: path_.go_on_from_standstill(t); break;
+    case DeleteDistanceToGo::Outcome::short_cut: path_->go_on_from_standstill(t); break;
     case DeleteDistanceToGo::Outcome::no_target: break;
     case DeleteDistanceToGo::Outcome::aborted: hli_.channel_state = ChannelState::error; break;
   }
 }
 
 void Channel::change_direction(double t, bool standing) {
-  if (!backward_.turn_due(path_.direction(), standing, ddtg_.on_short_cut(), ddtg_.pending(), events_)) return;
-  if (path_.direction() == TravelDirection::forward && !path_.empty() &&
-      lift_.forbids_backward(static_cast<size_t>(&path_.front_block() - path_.blocks().data()))) {
+  if (!backward_.turn_due(path_->direction(), standing, ddtg_.on_short_cut(), ddtg_.pending(), events_)) return;
+  if (path_->direction() == TravelDirection::forward && !path_->empty() &&
+      lift_->forbids_backward(static_cast<size_t>(&path_->front_block() - path_->blocks().data()))) {
     if (!backward_refused_)
       events_.raise(events_.at_block(Severity::warning, "backward motion is not available at or after a lift range "
                                                         "(LIFT-1): the path stands until backward motion is withdrawn"));
     backward_refused_ = true;
     return;
   }
-  insert_.before_turn(path_, t, distance_mm());  // ISC-9
-  if (!path_.turn(t, backward_.stored_blocks())) return;
+  insert_->before_turn(*path_, t, distance_mm());  // ISC-9
+  if (!path_->turn(t, backward_.stored_blocks())) return;
   update_hold();
-  if (path_.empty() && path_.direction() == TravelDirection::backward)
+  if (path_->empty() && path_->direction() == TravelDirection::backward)
     events_.raise(events_.at_block(Severity::warning, "backward motion: the stored contour begins here; it stands"));
-  path_.go_on_from_standstill(t);
+  path_->go_on_from_standstill(t);
 }
 
 void Channel::drive_error(const std::string& axis, const std::string& what) {
   if (error_stop_.begin(axis, what, hli_.channel_state, events_)) {
-    lift_.stop_now();
+    lift_->stop_now();
     update_hold();
   }
 }
 
 void Channel::error_stop(const std::string& reason) {
   if (error_stop_.begin_for(reason, "", hli_.channel_state, events_)) {
-    lift_.stop_now();
+    lift_->stop_now();
     update_hold();
   }
 }
@@ -216,27 +292,32 @@ PathHold Channel::hold() const {
   hold.set(HoldReason::channel_error, hli_.channel_state == ChannelState::error);
   hold.set(HoldReason::m_function_ack, actions_.waiting_for_acknowledgement());
   hold.set(HoldReason::dwell, actions_.in_dwell());
-  hold.set(HoldReason::direction_change, backward_.change_pending(path_.direction()));
-  hold.set(HoldReason::insert_command, insert_.pending() && hli_.channel_state == ChannelState::active);
+  hold.set(HoldReason::direction_change, backward_.change_pending(path_->direction()));
+  hold.set(HoldReason::insert_command, insert_->pending() && hli_.channel_state == ChannelState::active);
   hold.set(HoldReason::programmed_stop, programmed_stop_.stopped());
-  hold.set(HoldReason::lift_positioning, lift_.holds_path());
+  hold.set(HoldReason::lift_positioning, lift_->holds_path());
   return hold;
 }
 
 void Channel::update_hold() {
-  path_.set_velocity_factor(hold().velocity_factor(lift_.override_cap(hli_.override.state_r)));  // LIFT-8
+  path_->set_velocity_factor(hold().velocity_factor(lift_->override_cap(hli_.override.state_r)));  // LIFT-8
 }
 
 void Channel::reach_block(const Block& block, bool run_commands) {
   events_.set_block(block);
+  const size_t index = static_cast<size_t>(&block - path_->blocks().data());
+  if (continuation_block_ && index >= *continuation_block_) {  // DPS-3: repositioned
+    hli_.block_search.state_r.state = block_search_state::continued;
+    continuation_block_.reset();
+  }
   if (!run_commands) return;
-  lift_.reach_block(static_cast<size_t>(&block - path_.blocks().data()), hli_.override.state_r);
+  lift_->reach_block(index, hli_.override.state_r);
   update_hold();
   if (actions_.queue(block)) update_hold();
   if (block.distance_prog_start) distance_.apply(*block.distance_prog_start);
   if (block.programmed_stop && programmed_stop_.begin(*block.programmed_stop)) update_hold();  // M00 / M01
   if (block.insert_cmd) {  // ISC-8: set where the path stands, at this line
-    insert_.program_command(*block.insert_cmd);
+    insert_->program_command(*block.insert_cmd);
     update_hold();
   }
 }
@@ -246,17 +327,17 @@ void Channel::write_state() {
   hli_.block_nr_r = events_.block_nr();
   hli_.block_count_r = events_.block_count();
   hli_.last_error_id = events_.last_error_id();
-  hli_.backward_motion.state_r = path_.direction() == TravelDirection::backward;
+  hli_.backward_motion.state_r = path_->direction() == TravelDirection::backward;
   ddtg_.write(hli_);
-  insert_.write(hli_, path_);
+  insert_->write(hli_, *path_);
   for (size_t i = 0; i < machine_.axes.size(); ++i)  // a modulo axis within its range (KRN-7)
     hli_.axis_position_r[i] = std::llround(machine_.axes[i].in_modulo_range(setpoints()[i].position) * hli_units_per_mm);
   for (size_t i = 0; i < machine_.axes.size(); ++i) {  // LIFT-7
-    hli_.lift_active[i] = lift_.active(i);
-    hli_.lift_suppressed[i] = lift_.suppressed(i);
+    hli_.lift_active[i] = lift_->active(i);
+    hli_.lift_suppressed[i] = lift_->suppressed(i);
   }
   hli_.program_start.state_r = hli_.channel_state == ChannelState::active;
-  hli_.stop_conditions_r = hold().stop_conditions() | programmed_stop_.stop_conditions() | insert_.stop_conditions();
+  hli_.stop_conditions_r = hold().stop_conditions() | programmed_stop_.stop_conditions() | insert_->stop_conditions();
   if (hli_.override.state_r == 0) hli_.stop_conditions_r |= stop_condition::override_zero;
   if (hli_.channel_state != ChannelState::active) hli_.stop_conditions_r |= stop_condition::ipo_input_empty;
 }

@@ -14,7 +14,10 @@
 //   lift                   LIFT-1 .. LIFT-8: the lift axis' setpoint in a lift range
 //   path_hold              why the path holds: velocity factor, stop_conditions_r
 //   path_interpolator      look-ahead, plan, block cursors, travel direction
+//   block search (cnc/search)  DPS-3: a program start at a block number and distance
+//   reset                  abort the program where the path stands: READY again
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,7 @@
 #include "machine_config.hpp"
 #include "path_hold.hpp"
 #include "path_interpolator.hpp"
+#include "block_search.hpp"
 #include "programmed_stop.hpp"
 #include "rising_edge.hpp"
 #include "synchronous_actions.hpp"
@@ -66,7 +70,11 @@ class Channel : private PathObserver {
   // The phases of a cycle.
   void apply_control(const HliControl& control);
   double time_s() const { return static_cast<double>(cycle_ - start_cycle_) * machine_.cycle_time_s(); }
-  void apply_program_start(const ControlUnitBool& start);
+  void apply_program_start(const HliControl& control);
+  // The reset control unit: aborts the program where the path stands.
+  void apply_reset(const ControlUnitBool& reset);
+  // A new program run's units, at where the axes stand.
+  void begin_program_run();
   void run_path(const HliControl& control, double t);
   void interpolate(double t);
   void start_short_cut(double t);
@@ -79,7 +87,11 @@ class Channel : private PathObserver {
   double distance_mm() const;
   void write_state();
 
-  void start_program();
+  void start_program(const ControlUnitBlockSearch& search);
+  // DPS-3: the blocks from the continuation point on; false if the search
+  // failed (the program does not start).
+  bool search_continuation(const ControlUnitBlockSearch& search, std::vector<Block>& blocks,
+                           const std::vector<double>& start_position);
   // Why the path holds now; its velocity factor goes to the interpolator.
   PathHold hold() const;
   void update_hold();
@@ -89,7 +101,7 @@ class Channel : private PathObserver {
   void reach_block(const Block& block, bool run_commands) override;
   void travelled(double covered_distance) override {
     distance_.count(covered_distance);
-    lift_.count(covered_distance);
+    lift_->count(covered_distance);
   }
   void finish_block(size_t index) override { ddtg_.finish_block(index); }
 
@@ -97,19 +109,24 @@ class Channel : private PathObserver {
   std::string nc_program_;
   HliState hli_;
   ChannelEvents events_;
-  PathInterpolator path_;
+  // Per program run: made anew at a reset (they refer to machine_).
+  std::optional<PathInterpolator> path_;
   FeedControl feed_;
   DeleteDistanceToGo ddtg_;
   BackwardMotion backward_;
   SynchronousActions actions_;
   DistanceFromProgramStart distance_;
   DriveErrorStop error_stop_;
-  InsertStop insert_;
+  std::optional<InsertStop> insert_;
   ProgrammedStop programmed_stop_;
-  Lift lift_;
+  std::optional<Lift> lift_;
   std::vector<AxisSetpoint> setpoints_;
   bool backward_refused_ = false;  // warned once that a lift range forbids backward motion
   RisingEdge program_start_;
+  RisingEdge reset_;
+  // DPS-3: the approach and the collected M functions come first; the
+  // block with this index is the continuation's.
+  std::optional<size_t> continuation_block_;
   bool decode_failed_ = false;
   int64_t start_cycle_ = 0;
   int64_t cycle_ = 0;

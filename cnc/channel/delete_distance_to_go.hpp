@@ -44,6 +44,11 @@ class DeleteDistanceToGo {
     if (active_ && index == target_) active_ = false;
   }
   void write(HliState& hli) const;
+  // A reset: no short cut pending or running; the PLC's edge and mask stay.
+  void abort() {
+    requested_ = active_ = rapid_ = false;
+    target_ = 0;
+  }
 
  private:
   Outcome forward_short_cut(PathInterpolator& path, const StopPoint& stop, bool rapid, ChannelEvents& events);

@@ -13,6 +13,12 @@ class DistanceFromProgramStart {
  public:
   // #DISTANCE PROG START ON / OFF / CLEAR, when the interpolator reaches it.
   void apply(DistanceProgStart command);
+  // A block search's continuation (DPS-3): the distance there, and whether
+  // #DISTANCE PROG START ON was in force.
+  void preset(double distance_mm, bool counting) {
+    before_front_ = distance_mm;
+    counting_ = counting;
+  }
   // The path left a block or part of it (signed by the direction).
   void count(double covered_distance) {
     if (counting_) before_front_ += covered_distance;

@@ -21,6 +21,7 @@ class ProgrammedStop {
   // stops (M01 only while enabled).
   bool begin(int m);
   bool stopped() const { return stopped_m_ >= 0; }
+  void abort() { stopped_m_ = -1; }  // a reset; the PLC's levels and edge stay
   // HLI_SC_M00_OR_M01 with HLI_SC_M0_STOP or HLI_SC_M1_STOP while stopped.
   int32_t stop_conditions() const;
 

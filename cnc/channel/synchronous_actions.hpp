@@ -24,6 +24,11 @@ class SynchronousActions {
   bool waiting() const { return !actions_.empty(); }
   bool waiting_for_acknowledgement() const { return waiting() && actions_.front().m_function >= 0; }
   bool in_dwell() const { return waiting() && actions_.front().m_function < 0; }
+  // A reset: nothing left to output or wait for; the acknowledgement's edge stays.
+  void abort() {
+    actions_.clear();
+    dwell_end_ = -1;
+  }
 
  private:
   // An M function's acknowledgement (m_function >= 0) or a dwell (dwell_s > 0).

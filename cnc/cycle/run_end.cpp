@@ -11,7 +11,8 @@ RunEnd::RunEnd(const Scenario& scenario)
       max_cycles_(std::llround(scenario.max_time_s / scenario.machine.cycle_time_s())) {}
 
 bool RunEnd::settled(const Channel& channel, int64_t cycle) {
-  if (channel.finished() && finished_at_ < 0) finished_at_ = cycle;
+  if (!channel.finished()) finished_at_ = -1;  // a reset after program end: the run goes on
+  else if (finished_at_ < 0) finished_at_ = cycle;
   return finished_at_ >= 0 && cycle - finished_at_ >= settle_cycles_;
 }
 
