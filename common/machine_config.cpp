@@ -22,7 +22,7 @@ const std::vector<std::string> axis_keys = {
     "velocity_damping", "velocity_feedforward", "drive_acceleration_limit", "friction_coulomb", "friction_viscous",
     "dyn_monitoring_a_warn", "dyn_monitoring_a_err", "dyn_monitoring_v_warn", "dyn_monitoring_v_err",
     "slep_max", "slep_min", "following_error_monitoring", "swe_neg", "swe_pos", "swe_toleranz",
-    "modulo_lower", "modulo_upper"};
+    "modulo_lower", "modulo_upper", "reference_position"};
 
 constexpr int64_t int32_max = std::numeric_limits<int32_t>::max();
 
@@ -44,6 +44,7 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
   m.get("velocity_loop_order", axis.velocity_loop_order, 1, 2);
   m.get("velocity_damping", axis.velocity_damping, positive);
   m.get("velocity_feedforward", axis.velocity_feedforward, Bounds{0, 1});
+  m.get("reference_position", axis.reference_position);
   m.get("drive_acceleration_limit", axis.drive_acceleration_limit, positive);
   m.get("friction_coulomb", axis.friction_coulomb, non_negative);
   m.get("friction_viscous", axis.friction_viscous, non_negative);

@@ -52,6 +52,9 @@ struct AxisConfig {
   // stop (ISC-4) within [modulo_lower, modulo_upper).
   bool modulo = false;
   double modulo_lower = 0, modulo_upper = 0;
+  // mm, machine coordinates: where a G74 homing run ends; the rig
+  // simulates the reference signal there (DPS-3, docs/BLOCK_SEARCH.md).
+  double reference_position = 0;
 
   double modulo_range() const { return modulo_upper - modulo_lower; }
   // The position shifted into the modulo range; itself on a linear axis.

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "slope.hpp"
@@ -121,6 +122,9 @@ struct Block {
   // Set by the lift's preparation (lift_ranges): a range without path
   // motion; the path stands here while the lift axis positions (LIFT-2).
   bool lift_positioning = false;
+  // A command a distance search cannot simulate (DPS-3): "G74", "G100" or
+  // "#FLUSH WAIT"; empty otherwise. Nothing for the interpolator to do.
+  std::string not_searchable;
 
   // The path stands still where this block is reached: for the PLC's
   // acknowledgement, a dwell, or a channel initialisation.
@@ -128,10 +132,11 @@ struct Block {
     return !m_functions.empty() || dwell_s > 0 || programmed_stop || insert_cmd ||
            short_cut_restriction == ShortCutRestriction::channel_initialisation || lift_positioning;
   }
-  // Anything for the interpolator to do besides moving.
+  // Anything besides moving that keeps the block: a command for the
+  // interpolator, or a mark for block search (not_searchable).
   bool has_command() const {
     return distance_prog_start || ddtg_end_marker || stops_path() || program_end ||
-           short_cut_restriction != ShortCutRestriction::none;
+           short_cut_restriction != ShortCutRestriction::none || !not_searchable.empty();
   }
 };
 

@@ -1,7 +1,8 @@
 #pragma once
 // NC text -> blocks, for the dialect subset of KRN-1 implemented so far:
 // N, G00 G01 G02 G03 (I J centre, G161/G162, G164/G165), G90 G91, G92
-// (position preset), F (mm/min), M functions, M30, P<n> = expression,
+// (position preset), G74 (homing) and G100 (measurement) with their
+// signals simulated (line_decoder.cpp), F (mm/min), M functions, M30, P<n> = expression,
 // $FOR/$ENDFOR, #DISTANCE PROG START ON|OFF|CLEAR, #SLOPE[TYPE=..], #TIME,
 // #DEL DIST2GO [END=..], #CS ON [..]/OFF, #CHANNEL INIT [CMDPOS],
 // #INSERT CMD, #CONTOUR MODE, G60/G61/G260/G261/G359/G360, the lift

@@ -23,6 +23,7 @@ struct BlockWords {
   std::optional<MotionType> motion;         // G00..G03 of this block
   bool position_preset = false;             // G92: the axis words name the current position
   std::optional<int> transition;            // G60, G61, G260, G261, G359 or G360 (KRN-6)
+  std::optional<int> run;                   // G74 (homing) or G100 (measurement): this block only
 };
 
 int axis_of(const Word& w, const MachineConfig& machine) {
@@ -41,6 +42,9 @@ void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
     modal.absolute = g == 90;
   } else if (g == 92) {
     programmed.position_preset = true;
+  } else if (g == 74 || g == 100) {
+    if (programmed.run) throw LineError{"two of G74 / G100 in one block"};
+    programmed.run = g;
   } else if (g == 161 || g == 162) {
     modal.centre_absolute = g == 161;
   } else if (g == 164 || g == 165) {
@@ -118,14 +122,56 @@ BlockWords apply_words(const std::vector<Word>& words, DecoderState& state, Bloc
 
 // G92: the current position gets the programmed coordinates; nothing moves.
 void preset_position(const BlockWords& programmed, DecoderState& state) {
-  if (programmed.motion || programmed.i || programmed.j) throw LineError{"G92 must not be combined with motion"};
+  if (programmed.motion || programmed.run || programmed.i || programmed.j)
+    throw LineError{"G92 must not be combined with motion"};
   if (state.cs) throw LineError{"G92 while a #CS is active is not supported yet"};
   for (size_t a = 0; a < programmed.axes.size(); ++a)
     if (programmed.axes[a]) state.offset[a] = state.position[a] - *programmed.axes[a];
 }
 
+// G74 homing run and G100 measurement run: motions ended by an external
+// signal (DPS-3), non-modal, ending at standstill. The rig simulates the
+// signal: G74 moves the named axes together as a rapid to their reference
+// points (machine file `reference_position`; the words' values, TwinCAT's
+// homing order, are not used), G100 moves linearly at F to the programmed
+// point (no probe input: the run ends there). Block search by distance
+// cannot simulate them: not_searchable.
+void decode_run(const BlockWords& programmed, DecoderState& state, Block& block) {
+  const std::string name = "G" + std::to_string(*programmed.run);
+  if (programmed.motion) throw LineError{name + " cannot be combined with G00 / G01 / G02 / G03"};
+  if (programmed.i || programmed.j) throw LineError{"I/J are only allowed with G02/G03"};
+  block.not_searchable = name;
+  const bool homing = *programmed.run == 74;
+  std::vector<double> target = state.position;
+  if (homing) {
+    bool named = false;
+    for (size_t a = 0; a < programmed.axes.size(); ++a) {
+      if (!programmed.axes[a]) continue;
+      target[a] = state.machine.axes[a].reference_position;
+      named = true;
+    }
+    if (!named) throw LineError{"G74 needs the axes to home, e.g. G74 X1 Y2"};
+  } else {
+    target = programmed_target(programmed.axes, state);
+  }
+  check_position(target, state.machine, "end point");
+  if (!homing && !(state.modal.feed > 0)) throw LineError{"no feed F programmed for G100"};
+  if (target == state.position) return;  // the signal comes where the axes stand
+  block.has_motion = true;
+  Motion& m = block.motion;
+  m.type = homing ? MotionType::rapid : MotionType::linear;
+  m.start = state.position;
+  m.end = target;
+  m.feed = state.modal.feed;
+  block.slope = state.modal.slope;
+  block.transition = BlockTransition::exact_stop;
+  block.contour = state.modal.contour;
+  state.position = target;
+}
+
 // A block whose axes do not move is no motion block.
 void decode_motion(const BlockWords& programmed, DecoderState& state, Block& block) {
+  if (programmed.run) return decode_run(programmed, state, block);
   ModalState& modal = state.modal;
   if (programmed.motion) modal.motion = *programmed.motion;
   const std::vector<double> target = programmed_target(programmed.axes, state);

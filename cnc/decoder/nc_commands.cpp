@@ -301,6 +301,13 @@ void decode_insert_cmd(const std::string& arguments, DecoderState& state, Block&
   block.insert_cmd = line;
 }
 
+// #FLUSH WAIT waits for an external signal as well: block search by
+// distance cannot simulate it (DPS-3).
+void decode_flush_wait(const std::string& arguments, DecoderState& state, Block& block) {
+  decode_flush(arguments, state, block);
+  block.not_searchable = "#FLUSH WAIT";
+}
+
 void decode_rotation(const std::string&, DecoderState& state, Block&) { refuse_rotation("#ROTATION", state); }
 void decode_trafo(const std::string&, DecoderState& state, Block&) { refuse_rotation("#TRAFO", state); }
 
@@ -315,7 +322,7 @@ constexpr NcCommand nc_commands[] = {
     {"#INSERT CMD", decode_insert_cmd},
     {"#CONTOUR MODE", decode_contour_mode},
     {"#FLUSH", decode_flush},
-    {"#FLUSH WAIT", decode_flush},
+    {"#FLUSH WAIT", decode_flush_wait},
     {"#ROTATION", decode_rotation},
     {"#TRAFO", decode_trafo},
 };

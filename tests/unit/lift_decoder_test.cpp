@@ -277,9 +277,12 @@ TEST_CASE("LIFT-5 #FLUSH inside a range acts as LIFT_END at POS_LIMIT and LIFT_S
     check_z(block_nr(f, 70), 40);  // the second part stands at POS_LIMIT
     check_z(block_nr(f, 100), 12);
   }
-  // Outside a range #FLUSH does nothing in this rig: no block.
+  // Outside a range #FLUSH does nothing in this rig: no block. #FLUSH WAIT
+  // keeps one, marked for block search only (DPS-3).
   const DecodedProgram outside = decoded("N10 G01 X1 F100\nN20 #FLUSH\nN30 #flush  wait\nN40 X2\n");
-  CHECK(outside.blocks.size() == 2);
+  REQUIRE(outside.blocks.size() == 3);
+  CHECK(outside.blocks[1].not_searchable == "#FLUSH WAIT");
+  CHECK_FALSE(outside.blocks[1].lift_end);
   check_refused("N10 G01 X1 F100\nN20 #FLUSH NOW\n", 2, 20, "#FLUSH takes nothing but WAIT", 1);
 }
 
