@@ -92,6 +92,7 @@ void Channel::begin_program_run() {
   distance_ = DistanceFromProgramStart();
   error_stop_ = DriveErrorStop();
   continuation_block_.reset();
+  continuation_reached_ = false;
   decode_failed_ = false;
   backward_refused_ = false;
   hli_.channel_state = ChannelState::ready;
@@ -306,10 +307,7 @@ void Channel::update_hold() {
 void Channel::reach_block(const Block& block, bool run_commands) {
   events_.set_block(block);
   const size_t index = static_cast<size_t>(&block - path_->blocks().data());
-  if (continuation_block_ && index >= *continuation_block_) {  // DPS-3: repositioned
-    hli_.block_search.state_r.state = block_search_state::continued;
-    continuation_block_.reset();
-  }
+  if (continuation_block_ && index >= *continuation_block_) continuation_reached_ = true;  // DPS-3
   if (!run_commands) return;
   lift_->reach_block(index, hli_.override.state_r);
   update_hold();
@@ -337,6 +335,12 @@ void Channel::write_state() {
     hli_.lift_suppressed[i] = lift_->suppressed(i);
   }
   hli_.program_start.state_r = hli_.channel_state == ChannelState::active;
+  // DPS-3: repositioned once on the continuation's block with the collected M functions acknowledged.
+  if (continuation_reached_ && !actions_.waiting()) {
+    hli_.block_search.state_r.state = block_search_state::continued;
+    continuation_block_.reset();
+    continuation_reached_ = false;
+  }
   hli_.stop_conditions_r = hold().stop_conditions() | programmed_stop_.stop_conditions() | insert_->stop_conditions();
   if (hli_.override.state_r == 0) hli_.stop_conditions_r |= stop_condition::override_zero;
   if (hli_.channel_state != ChannelState::active) hli_.stop_conditions_r |= stop_condition::ipo_input_empty;

@@ -124,9 +124,10 @@ class Channel : private PathObserver {
   bool backward_refused_ = false;  // warned once that a lift range forbids backward motion
   RisingEdge program_start_;
   RisingEdge reset_;
-  // DPS-3: the approach and the collected M functions come first; the
+  // DPS-3: the collected M functions and the approach come first; the
   // block with this index is the continuation's.
   std::optional<size_t> continuation_block_;
+  bool continuation_reached_ = false;
   bool decode_failed_ = false;
   int64_t start_cycle_ = 0;
   int64_t cycle_ = 0;

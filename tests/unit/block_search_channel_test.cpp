@@ -34,9 +34,10 @@ std::vector<double> positions(const Channel& channel) {
   return p;
 }
 
-// M functions are acknowledged at once (MVS_SVS).
+// M functions are acknowledged at once (MVS_SVS): a one-cycle edge, so
+// that the next one, output in the cycle the CNC takes the edge, gets its own.
 void acknowledge(const HliState& state, HliControl& control) {
-  control.m_function_ack = {state.m_function_request_r, true};
+  control.m_function_ack = {state.m_function_request_r && !control.m_function_ack.command_w, true};
 }
 
 struct Trace {
@@ -133,6 +134,10 @@ Interruption interrupt_and_continue(const MachineConfig& machine, const std::str
     }
   });
   INFO("stopped at " << result.stop_dist_mm << " mm in N" << result.stop_block_nr);
+  INFO("at the end: block search state " << channel.hli().block_search.state_r.state << ", stop conditions 0x"
+                                         << std::hex << channel.hli().stop_conditions_r << std::dec << ", N"
+                                         << channel.hli().block_nr_r << ", dist " << channel.hli().dist_prog_start
+                                         << ", v " << channel.hli().path_velocity);
   REQUIRE(phase == 3);
   REQUIRE(channel.hli().channel_state == ChannelState::program_end);
   const logger::CheckReport report = checker.finish();
