@@ -1,7 +1,8 @@
 #pragma once
-// One scenario run on several machines (RIG-5): `variants:` names a machine
-// each, the rest of the file is shared; `compare:` checks the variants
-// against each other (docs/SCENARIOS.md, "Variants").
+// One scenario run as several variants (RIG-5): each its own run, with its
+// own machine, or PLC timeline, or more expectations; the rest of the file is
+// shared; `compare:` checks the variants against each other
+// (docs/SCENARIOS.md, "Variants").
 #include <string>
 #include <vector>
 
@@ -11,16 +12,21 @@ namespace hil {
 
 struct ScenarioVariant {
   std::string name;   // "" for a scenario without variants
-  Scenario scenario;  // with this variant's machine; named <scenario>.<variant>
+  Scenario scenario;  // with this variant's machine, timeline, expectations; named <scenario>.<variant>
 };
 
-// "the highest (axis_max_mm) or lowest (axis_min_mm) commanded position of
+// axis_max_mm / axis_min_mm: "the highest (lowest) commanded position of
 // `axis` in variant `greater` exceeds that of `than` by more than by_at_least_mm".
+// same_path (DPS-3): "`variant`'s commanded positions over dist_prog_start,
+// beyond from_dist_mm, are those of `reference` within tolerance_mm"
+// (logger/same_path.hpp).
 struct VariantComparison {
   std::string key;
   std::string axis;
   std::string greater, than;
   double by_at_least_mm = 0;
+  std::string reference, variant;
+  double from_dist_mm = 0, tolerance_mm = 0.001;
 };
 
 struct ScenarioSet {

@@ -34,6 +34,49 @@ const VariantFigures* variant_named(const std::vector<VariantFigures>& variants,
   return nullptr;
 }
 
+// The commanded path: the setpoints (AXIS_<X>_CMD, the positions the drives
+// are given) and dist_prog_start of the same cycle, both written by one
+// interpolation step of the CNC.
+logger::PathTrace path_trace(const logger::RunLog& log) {
+  logger::PathTrace p;
+  const MachineConfig& machine = log.scenario->machine;
+  const size_t n = std::min(machine.axes.size(), log.axes.size());
+  std::vector<std::map<int64_t, double>> by_cycle(n);
+  for (size_t a = 0; a < n; ++a) {
+    p.axes.push_back(machine.axes[a].name);
+    p.modulo_range.push_back(machine.axes[a].modulo ? machine.axes[a].modulo_range() : 0.0);
+    for (size_t i = 0; i < log.axes[a].cmd_cycle.size(); ++i)
+      by_cycle[a][log.axes[a].cmd_cycle[i]] = log.axes[a].cmd_position[i];
+  }
+  p.position.resize(n);
+  std::map<int64_t, double> dist;  // a cycle's HLI state once, in cycle order
+  for (size_t i = 0; i < log.hli.cycle.size(); ++i) dist.emplace(log.hli.cycle[i], log.hli.dist_prog_start_mm[i]);
+  for (const auto& [cycle, d] : dist) {
+    bool all = true;
+    for (size_t a = 0; a < n; ++a) all = all && by_cycle[a].count(cycle);
+    if (!all) continue;
+    p.cycle.push_back(cycle);
+    p.dist_mm.push_back(d);
+    for (size_t a = 0; a < n; ++a) p.position[a].push_back(by_cycle[a][cycle]);
+  }
+  return p;
+}
+
+std::string same_path_line(const std::vector<VariantFigures>& variants, const VariantComparison& c, bool& holds) {
+  const VariantFigures* reference = variant_named(variants, c.reference);
+  const VariantFigures* variant = variant_named(variants, c.variant);
+  std::string line = "compare same_path " + c.variant + " against " + c.reference + " (dist_prog_start > " +
+                     num(c.from_dist_mm, 4) + " mm, tolerance " + num(c.tolerance_mm * 1000, 3) + " µm): ";
+  if (!reference || !variant) {
+    holds = false;
+    return line + "FAILS (no figures of " + c.reference + " or " + c.variant + ")\n";
+  }
+  const logger::SamePathResult r =
+      logger::compare_same_path(reference->path, variant->path, c.from_dist_mm, c.tolerance_mm);
+  holds = r.holds;
+  return line + logger::describe(r) + ": " + (r.holds ? "holds" : "FAILS") + "\n";
+}
+
 }  // namespace
 
 VariantFigures figures_of(const std::string& name, bool passed, const logger::RunLog& log,
@@ -87,6 +130,7 @@ VariantFigures figures_of(const std::string& name, bool passed, const logger::Ru
       }
     }
   }
+  f.path = path_trace(log);
   return f;
 }
 
@@ -95,6 +139,12 @@ std::string check_comparisons(const std::vector<VariantFigures>& variants,
   std::ostringstream out;
   all_hold = true;
   for (const VariantComparison& c : comparisons) {
+    if (c.key == "same_path") {
+      bool holds = false;
+      out << same_path_line(variants, c, holds);
+      all_hold = all_hold && holds;
+      continue;
+    }
     const VariantFigures* g = variant_named(variants, c.greater);
     const VariantFigures* t = variant_named(variants, c.than);
     const int ga = g ? axis_of(*g, c.axis) : -1, ta = t ? axis_of(*t, c.axis) : -1;
@@ -160,9 +210,14 @@ std::string format_variants(const std::vector<VariantFigures>& variants) {
 std::string draw_comparison_plots(const std::string& scenario_name, const std::vector<VariantFigures>& variants,
                                   const std::vector<VariantComparison>& comparisons, const std::string& dir) {
   std::vector<std::string> axes;
-  for (const VariantComparison& c : comparisons)
-    if (std::find(axes.begin(), axes.end(), c.axis) == axes.end()) axes.push_back(c.axis);
-  if (axes.empty() && !variants.empty()) axes = variants.front().axes;
+  bool all_axes = comparisons.empty();
+  for (const VariantComparison& c : comparisons) {
+    if (c.key == "same_path") all_axes = true;  // a path is all axes
+    else if (std::find(axes.begin(), axes.end(), c.axis) == axes.end()) axes.push_back(c.axis);
+  }
+  if (all_axes && !variants.empty())
+    for (const std::string& a : variants.front().axes)
+      if (std::find(axes.begin(), axes.end(), a) == axes.end()) axes.push_back(a);
   fs::create_directories(dir);
   const fs::path folder = fs::absolute(dir);
   for (const VariantFigures& v : variants) {

@@ -1,13 +1,15 @@
 #pragma once
 // A scenario's variants side by side (RIG-5, docs/SCENARIOS.md "Variants"):
 // per variant the extremes of each axis, the path time and the largest
-// lifting |a|; the `compare:` checks; one plot overlaying an axis of all.
+// lifting |a|; the `compare:` checks (same_path: logger/same_path.hpp); one
+// plot overlaying an axis of all.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "limit_check.hpp"
 #include "run_log.hpp"
+#include "same_path.hpp"
 #include "scenario_set.hpp"
 
 namespace hil::rig {
@@ -23,6 +25,8 @@ struct VariantFigures {
   // For the plot: per commanded sample, time and dist_prog_start, and each axis' position.
   std::vector<double> t_s, dist_mm;
   std::vector<std::vector<double>> position;
+  // For same_path: the cycles with the HLI state and every setpoint.
+  logger::PathTrace path;
 };
 
 VariantFigures figures_of(const std::string& name, bool passed, const logger::RunLog& log,
