@@ -122,6 +122,7 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       log.hli.dist_prog_start_mm.push_back(m.dist_prog_start / hli_units_per_mm);
       log.hli.block_nr_r.push_back(m.block_nr_r);
       log.hli.channel_state.push_back(m.channel_state);
+      log.hli.block_search_state.push_back(m.block_search.state_r.state);
       // The lift's overload range (LIFT-2): the cycles each axis lifts.
       for (size_t i = 0; checker && i < m.lift_active.size() && i < m.axis_name.size(); ++i)
         if (m.lift_active[i])

@@ -34,6 +34,7 @@ struct HliTrace {
   std::vector<double> path_velocity, dist_prog_start_mm;
   std::vector<int64_t> block_nr_r;
   std::vector<int> channel_state;
+  std::vector<int> block_search_state;  // block_search.state_r.state (DPS-3)
 };
 
 struct RunLog {

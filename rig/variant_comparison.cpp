@@ -49,8 +49,14 @@ logger::PathTrace path_trace(const logger::RunLog& log) {
       by_cycle[a][log.axes[a].cmd_cycle[i]] = log.axes[a].cmd_position[i];
   }
   p.position.resize(n);
-  std::map<int64_t, double> dist;  // a cycle's HLI state once, in cycle order
-  for (size_t i = 0; i < log.hli.cycle.size(); ++i) dist.emplace(log.hli.cycle[i], log.hli.dist_prog_start_mm[i]);
+  // A cycle's HLI state once, in cycle order; not the cycles off the
+  // program's path: READY (before a start, after a reset) and a block
+  // search's repositioning (DPS-3: the approach covers no distance).
+  std::map<int64_t, double> dist;
+  for (size_t i = 0; i < log.hli.cycle.size(); ++i)
+    if (static_cast<ChannelState>(log.hli.channel_state[i]) != ChannelState::ready &&
+        log.hli.block_search_state[i] != block_search_state::repositioning)
+      dist.emplace(log.hli.cycle[i], log.hli.dist_prog_start_mm[i]);
   for (const auto& [cycle, d] : dist) {
     bool all = true;
     for (size_t a = 0; a < n; ++a) all = all && by_cycle[a].count(cycle);
