@@ -14,6 +14,15 @@ inline const std::string scenario = "HIL_SCENARIO";
 inline const std::string log_end = "HIL_LOG_END";
 // LCM's own: every udpm instance sends one when it opens. Not the rig's; ignored.
 inline const std::string lcm_self_test = "LCM_SELF_TEST";
+// Every channel but LCM_SELF_TEST, as an LCM subscription (a regular
+// expression; LCM anchors it). Not ".*": LCM 1.3.1 counts a queued message
+// against the subscriptions of its channel when it arrives and takes it off
+// the counts of the subscriptions there are when it is handled. A self-test
+// message queued for LCM's own short-lived self-test subscription and handled
+// after it is gone is taken off a ".*" subscription that never counted it;
+// that subscription then drops the next message it is left holding alone,
+// silently (docs/RELIABILITY.md, "The first cycles").
+inline const std::string every_channel_but_self_test = "(?!LCM_SELF_TEST$).*";
 
 inline std::string axis_command(const std::string& axis) { return "AXIS_" + axis + "_CMD"; }
 inline std::string axis_state(const std::string& axis) { return "AXIS_" + axis + "_STATE"; }

@@ -1,12 +1,14 @@
 // The `hil_logger` node (RIG-1, RIG-4, RIG-9): records every message of one
-// run into a standard LCM event log, with no drops (a deep queue on its one
-// subscription, a large socket buffer in the URL), and closes the log only
-// when every participant of the run has announced its end — it knows them
-// from hil run (--participants) or from the CNC's manifest, not from whom
-// it happened to hear READY. It survives any datagram: what is not this
-// run's, or not readable, is counted per channel and left out. Its last
-// record (HIL_LOG_END) says it closed the log on purpose and what it
-// missed; it writes the resolved scenario (HIL_SCENARIO) after the manifest.
+// run into a standard LCM event log, with no drops (a deep queue on its
+// recording subscription, which leaves out LCM_SELF_TEST:
+// channels::every_channel_but_self_test; a large socket buffer in the URL),
+// and closes the log only when every participant of the run has announced
+// its end — it knows them from hil run (--participants) or from the CNC's
+// manifest, not from whom it happened to hear READY. It survives any
+// datagram: what is not this run's, or not readable, is counted per channel
+// and left out. Its last record (HIL_LOG_END) says it closed the log on
+// purpose and what it missed; it writes the resolved scenario
+// (HIL_SCENARIO) after the manifest.
 #include <hil/log_summary_t.hpp>
 #include <hil/participant_t.hpp>
 #include <hil/run_manifest_t.hpp>
@@ -71,8 +73,10 @@ class LoggerNode {
     if (!log_.good()) throw std::runtime_error("cannot write log " + path);
     for (const std::string& name : participants) attendance_.expect(name);
     told_participants_ = !participants.empty();
+    // The first subscription: it must exist before any other (the inbox's
+    // come after it), else it is handed messages it never counted.
     lcm.subscribeFunction(
-           ".*",
+           channels::every_channel_but_self_test,
            +[](const lcm::ReceiveBuffer* rbuf, const std::string& channel, LoggerNode* self) {
              self->receive(*rbuf, channel);
            },
@@ -116,7 +120,6 @@ class LoggerNode {
 
   void receive(const lcm::ReceiveBuffer& rbuf, const std::string& channel) {
     if (!lcm_support::framed(rbuf)) return refused_.refuse(traffic::malformed_datagram, traffic::Refusal::undecodable);
-    if (channel == channels::lcm_self_test) return;
     if (channel == channels::log_end) return;  // another logger's seal (a replay): this one writes its own
     const auto id = lcm_support::identify(channel, rbuf.data, rbuf.data_size);
     if (!id) return refused_.refuse(channel, traffic::Refusal::undecodable);
