@@ -15,6 +15,7 @@
 
 #include "channel.hpp"
 #include "channel_runner.hpp"
+#include "dps_example_program.hpp"
 #include "test_machine.hpp"
 
 using namespace hil;
@@ -220,25 +221,5 @@ TEST_CASE("DPS-3 channel: interrupted at random distances, a $FOR loop continues
 
 TEST_CASE("DPS-3 channel: interrupted at random distances, #DISTANCE PROG START OFF sections and G92 offsets",
           "[DPS-3][channel]") {
-  check_random_interruptions(  // TF5200_distance_from_program_start.txt's example program (DPS-2)
-      "N10 #DISTANCE PROG START OFF\n"
-      "N20 G01 G90 X0 Y0 Z0 F6000\n"
-      "N100 G92 X33 Y55\n"
-      "N110 X0 Y0 Z0\n"
-      "N120 #DISTANCE PROG START ON\n"
-      "N130 X100\n"
-      "N140 Y100\n"
-      "N150 X0\n"
-      "N160 Y0\n"
-      "N170 #DISTANCE PROG START OFF\n"
-      "N200 G92 X600 Y700\n"
-      "N210 X0 Y0 Z0\n"
-      "N220 #DISTANCE PROG START ON\n"
-      "N230 X100\n"
-      "N240 Y100\n"
-      "N250 X0\n"
-      "N260 Y0\n"
-      "N270 #DISTANCE PROG START OFF\n"
-      "M30\n",
-      304, 8);
+  check_random_interruptions(test::dps_example_program, 304, 8);  // DPS-2
 }
