@@ -20,7 +20,7 @@ class FuzzPlc {
  public:
   // What the PLC last asked a block search for (DPS-3).
   struct SearchRequest {
-    bool at_stop = false;  // type 4 at block_nr_r and dist_prog_start read at the stop
+    bool at_stop = false;  // type 4 at block_nr_r and dist_prog_start read at the stop (not on an approach)
     BlockSearchCommand command;
   };
 
@@ -193,6 +193,8 @@ class FuzzPlc {
             s.path_velocity == 0 && s.feedhold.state_r && search_rng_.chance(search_chance_)) {
           stop_block_nr_ = s.block_nr_r;
           stop_distance_ = s.dist_prog_start;
+          // Standing on an approach, dist_prog_start shows the continuation's distance, not where the path stands.
+          read_on_approach_ = s.block_search.state_r.state == block_search_state::repositioning;
           c.reset = {true, true};
           ++resets_given_;
           search_phase_ = SearchPhase::reset_given;
@@ -213,7 +215,7 @@ class FuzzPlc {
           w.type = which == 1 ? 1 : 4;
           w.block_nr = static_cast<uint32_t>(which == 3 ? 10 * search_rng_.integer(1, lines_ + 1) : stop_block_nr_);
           w.distance = which == 2 ? search_rng_.uniform(0, 1.5 * stop_distance_) : stop_distance_;
-          last_search_.at_stop = which == 0;
+          last_search_.at_stop = which == 0 && !read_on_approach_;
           last_search_.command = w;
         }
         start(true);
@@ -274,6 +276,7 @@ class FuzzPlc {
   int64_t last_start_ = 0;  // the answer that gave the last start edge (cycle 0's start is before answer 0)
   int64_t stop_block_nr_ = 0;
   double stop_distance_ = 0;
+  bool read_on_approach_ = false;
   SearchRequest last_search_;
   bool use_insert_ = false, cleared_ = false;
   double insert_mean_ = 0;
