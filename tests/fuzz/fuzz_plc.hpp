@@ -207,7 +207,7 @@ class FuzzPlc {
           search_phase_ = SearchPhase::idle;
           return;
         }
-        ++counts_.resets;
+        if (s.reset.state_r) ++counts_.resets;
         if (!start_edge_possible) return;
         {
           const size_t which = search_rng_.pick({0.7, 0.1, 0.1, 0.1});
