@@ -7,6 +7,7 @@
 //   build/bin/channel_fuzz --runs 10000 --seed 1
 //   build/bin/channel_fuzz --seed 4711 --runs 1 --print-program   (reproduce one)
 //   build/bin/channel_fuzz --seed 4711 --runs 1 --trace > trace.tsv
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -96,12 +97,15 @@ int main(int argc, char** argv) {
   int max_failures_shown = 5;
   app.add_option("--runs", runs, "number of runs (seeds seed .. seed + runs - 1)")->check(CLI::PositiveNumber);
   app.add_option("--seed", seed, "first seed");
-  app.add_option("--program-kind", kind_name, "all (by seed), mixed, lines, arcs, steps, commands");
+  app.add_option("--program-kind", kind_name, "all (by seed), mixed, lines, arcs, steps, commands, contour, lift");
   app.add_option("--min-items", options.min_items, "fewest generator items per program")->check(CLI::PositiveNumber);
   app.add_option("--max-items", options.max_items, "most generator items per program")->check(CLI::PositiveNumber);
   app.add_flag("--quiet-plc", quiet_plc, "no random PLC edges: program start and prompt M acknowledgements only");
   bool no_insert_stops = false;
   app.add_flag("--no-insert-stops", no_insert_stops, "no random insert stop commands (ISC): every seed runs as before them");
+  bool no_block_search = false;
+  app.add_flag("--no-block-search", no_block_search,
+               "no resets and block searches (DPS-3) from the PLC: every seed runs as before them");
   app.add_flag("--print-program", print_program, "print the NC program of every failing run (and of a single run)");
   app.add_flag("--trace", trace, "print every cycle (TSV) of the runs");
   app.add_option("--show", max_failures_shown, "failures shown per failing run");
@@ -132,6 +136,7 @@ int main(int argc, char** argv) {
   }
   options.random_plc = !quiet_plc;
   options.insert_stops = !no_insert_stops;
+  options.block_search = !no_block_search;
   if (chaos >= 0) options.chaos_cycles = chaos;
   if (trace) {
     std::printf("cycle\tx\ty\tz\tv_path\tblock_nr\tblock_count\tdps_mm\tstate\tbackward\tshort_cut\tm_request\t"
@@ -154,6 +159,9 @@ int main(int argc, char** argv) {
   const auto t0 = std::chrono::steady_clock::now();
   int64_t cycles = 0, failed_runs = 0, failures = 0;
   int64_t with_short_cut = 0, with_backward = 0, with_m = 0, with_random_plc = 0, insert_commands = 0, insert_stops = 0;
+  int64_t resets = 0, searches = 0, search_errors = 0, with_reset = 0, at_stop = 0, at_stop_moved = 0;
+  double approach_max = 0;
+  int64_t decode_refused = 0;
   std::map<std::string, int64_t> by_invariant, failed_by_kind, runs_by_kind;
   for (int64_t i = 0; i < runs; ++i) {
     const uint64_t s = seed + static_cast<uint64_t>(i);
@@ -165,6 +173,14 @@ int main(int argc, char** argv) {
     with_m += run.m_output;
     insert_commands += run.plc.insert_commands;
     insert_stops += run.plc.insert_stops;
+    resets += run.plc.resets;
+    searches += run.plc.searches;
+    search_errors += run.plc.search_errors;
+    with_reset += run.plc.resets > 0;
+    at_stop += run.at_stop_searches;
+    decode_refused += run.restart_decode_errors;
+    at_stop_moved += run.at_stop_moved;
+    approach_max = std::max(approach_max, run.at_stop_approach_max_mm);
     with_random_plc += run.chaos_cycles > 0;
     if (runs == 1 && print_program && !trace) std::printf("%s", run.program.text.c_str());
     if (run.passed()) continue;
@@ -199,6 +215,14 @@ int main(int argc, char** argv) {
   std::printf("insert stop commands %lld, insert / M00 / M01 stops continued %lld%s\n",
               static_cast<long long>(insert_commands), static_cast<long long>(insert_stops),
               options.insert_stops ? "" : " (--no-insert-stops)");
+  std::printf("resets %lld (in %lld runs), block searches %lld, of them failed (state 3) %lld%s\n",
+              static_cast<long long>(resets), static_cast<long long>(with_reset), static_cast<long long>(searches),
+              static_cast<long long>(search_errors), options.block_search ? "" : " (--no-block-search)");
+  std::printf("restarts and searches after a reset refused by the decoder from where the axes stood %lld\n",
+              static_cast<long long>(decode_refused));
+  std::printf("type 4 searches at what was read at the stop that continued %lld, their approach moved > 1 um %lld "
+              "(the starting movement counts), longest %.6f mm\n",
+              static_cast<long long>(at_stop), static_cast<long long>(at_stop_moved), approach_max);
   std::printf("failed runs: %lld, failures: %lld\n", static_cast<long long>(failed_runs),
               static_cast<long long>(failures));
   for (const auto& [kind, n] : runs_by_kind)

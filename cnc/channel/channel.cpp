@@ -75,6 +75,15 @@ void Channel::apply_reset(const ControlUnitBool& reset) {
       return;
     }
   }
+  // The path stands, but an Advanced Lifting axis still moves in time (LIFT-2):
+  // a reset there would stop it dead, beyond its acceleration and jerk.
+  // Round-off (1e-14 mm/s) is no motion: stopping 1 um/s in a cycle (1e-3 mm/s) is far within any limit.
+  for (const AxisSetpoint& axis : setpoints_)
+    if (std::abs(axis.velocity) > 1e-3 || std::abs(axis.acceleration) > 1e-3) {
+      Event ignored = events_.at_block(Severity::warning, "reset ignored: an axis moves (the lift axis lifts or lands)");
+      events_.raise(ignored);
+      return;
+    }
   begin_program_run();
   hli_.reset.state_r = true;
 }

@@ -142,8 +142,9 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   const double short_cut_s = std::isfinite(slowest) ? std::sqrt(extent_sq) / slowest * 1000.0 / calm_override_min : 0;
   const double calm_s = t100 * 1000.0 / calm_override_min + short_cut_s + program.dwell_s +
                         0.008 * static_cast<double>(program.m_functions.size()) + 2.0;
-  run.cycle_bound = run.chaos_cycles + static_cast<int64_t>(std::ceil(1.5 * calm_s / dt)) + 1000 +
-                    (options.insert_stops && options.random_plc ? 3000 : 0);  // a last stop, its continuation
+  run.restart_cycles = static_cast<int64_t>(std::ceil(1.5 * calm_s / dt)) + 1000 +
+                       (options.insert_stops && options.random_plc ? 3000 : 0);  // a last stop, its continuation
+  run.cycle_bound = run.chaos_cycles + run.restart_cycles;
   return run;
 }
 
@@ -159,7 +160,8 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
 
   cnc::Channel channel(machine, program.text);
   logger::LimitChecker checker(machine);
-  FuzzPlc plc(mix_seed(seed ^ 0x91c), run.chaos_cycles, options.insert_stops && options.random_plc);
+  FuzzPlc plc(mix_seed(seed ^ 0x91c), run.chaos_cycles, options.insert_stops && options.random_plc,
+              options.block_search && options.random_plc, lines);
   HliControl control;
   control.program_start = {true, true};
   control.feedhold.enable_w = true;
@@ -180,9 +182,19 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   const bool dps_counts_all = !program.has_dps_off && program.clear_lines.empty();
   bool ddtg_requested = false, motion_ended_early = false, clear_seen_before = false;
   bool lift_command_not_skipped = false;  // 51016 ended the run (DDTG-8)
+  // DPS-3: resets and program starts (with a block search or not).
+  int64_t resets = 0;
+  ChannelState previous_state = ChannelState::ready;
+  int32_t previous_search_state = block_search_state::none;
+  bool previous_dps_jump = false;
+  bool approach_behind = false;  // backward motion since a search: the path may run on its approach (no distance)
+  std::vector<double> last_start_position(axes, 0.0);  // where the axes stood at the last program start
+  double approach_mm = 0;  // the path the axes travelled while repositioning
+  bool restart_refused = false;  // the last start's decoder refused the program from there: it ends in ERROR
   const size_t max_failures = 20;
 
-  auto check_events = [&](int64_t k) {
+  // search_failed: the cycle a block search failed (state 3): its error event is expected.
+  auto check_events = [&](int64_t k, bool search_failed = false, const Event* refused = nullptr) {
     for (const Event& e : channel.take_events()) {
       ++run.events;
       if (e.id == 50810) {
@@ -193,9 +205,16 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
         continue;
       }
       const bool from_plc = e.nc_line == 0 && (e.message.rfind("override ", 0) == 0 ||
-                                               e.message.rfind("program start ignored", 0) == 0);
+                                               e.message.rfind("program start ignored", 0) == 0 ||
+                                               e.message.rfind("reset ignored", 0) == 0);  // before any block
       if (!from_plc && run.event_log.size() < 64)
         run.event_log.push_back("cycle " + std::to_string(k) + ": " + describe(e));
+      if (refused && e.severity == Severity::error && e.nc_line == refused->nc_line && e.message == refused->message)
+        continue;
+      if (e.severity == Severity::error && search_failed) {
+        ++run.search_error_events;  // DPS-3: the search's error (no such block, beyond the end, G74 ..)
+        continue;
+      }
       if (e.severity == Severity::error)
         fail({"event", k, e.axis, "", e.value, e.limit, e.nc_line, "error event: " + describe(e)});
       else if (!from_plc && (e.nc_line < 1 || e.nc_line > lines))
@@ -220,7 +239,56 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     const std::vector<cnc::AxisSetpoint>& sp = channel.setpoints();
     const int64_t line = s.block_count_r;
     line_at.push_back(line);
-    check_events(k);
+    const int32_t search_state = s.block_search.state_r.state;
+    // DPS-3: a reset sets dist_prog_start to 0, a start with a search to the
+    // continuation's distance: that cycle and the next are exempt.
+    const bool started = previous_state == ChannelState::ready && s.channel_state != ChannelState::ready;
+    // A program start (after a reset) or a search decodes the program from
+    // where the axes stand: a program whose first arc or G91 motion is
+    // valid only from where it began is refused from elsewhere, as the
+    // decoder says (the blocks before the error still run).
+    const bool search_failed =
+        search_state == block_search_state::error && previous_search_state != block_search_state::error;
+    const bool decodes = resets > 0 && (started || search_failed);
+    std::optional<Event> refused;
+    if (decodes) {
+      refused = cnc::decode_program(program.text, machine, previous_position).error;
+      if (refused) ++run.restart_decode_errors;
+      restart_refused = restart_refused || (refused && started);
+    }
+    check_events(k, search_failed, refused ? &*refused : nullptr);
+    if (started) last_start_position = previous_position;
+    if (s.reset.state_r) {
+      ++resets;
+      restart_refused = false;
+      run.cycle_bound += run.restart_cycles;
+      motion_ended_early = false;  // the program runs again
+      approach_behind = false;
+    }
+    const bool dps_jump = s.reset.state_r || started;
+    const bool searched = started && (search_state == block_search_state::repositioning ||
+                                      search_state == block_search_state::continued);
+    if (searched) {  // the continuation the search reports against the request
+      const BlockSearchCommand& asked = plc.last_search().command;
+      const BlockSearchState& found = s.block_search.state_r;
+      const double cont_mm = found.continuation_distance / hli_units_per_mm, asked_mm = asked.distance / hli_units_per_mm;
+      if (asked.type == 4 && !found.continuation_moved && std::abs(cont_mm - asked_mm) > 1e-9 + 1e-12 * asked_mm)
+        fail({"block search", k, "", "continuation_distance (mm)", cont_mm, asked_mm, line,
+              "a type 4 search continues at another distance than asked"});
+      // A distance read at a block's start may lie a round-off below the search's sum there (a warning).
+      if (asked.type == 4 && found.continuation_moved && !(cont_mm > asked_mm - 1e-9 - 1e-12 * asked_mm))
+        fail({"block search", k, "", "continuation_distance (mm)", cont_mm, asked_mm, line,
+              "moved to the block's start, but the distance did not lie before it"});
+      if (std::abs(s.dist_prog_start - found.continuation_distance) > 1e-3)
+        fail({"block search", k, "", "dist_prog_start at the search's start (mm)", s.dist_prog_start / hli_units_per_mm,
+              cont_mm, line, "not preset to the continuation's distance"});
+      approach_mm = 0;
+    }
+    // The approach covers no distance (DPS OFF): no chord in the cycles on it.
+    const bool repositioning = search_state == block_search_state::repositioning ||
+                               previous_search_state == block_search_state::repositioning;
+    if (search_state == block_search_state::repositioning || search_state == block_search_state::continued)
+      approach_behind = approach_behind || s.backward_motion.state_r;
 
     double chord_sq = 0;
     checker.add_hli_state(s);  // lift_active: the lift's overload range (LIFT-2)
@@ -252,7 +320,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     // A CLEAR runs when the interpolator passes its line; the HLI may show
     // the cleared value a cycle later (a short cut starts after the cycle's
     // interpolation, DDTG-7 runs the skipped lines then).
-    bool cleared = clear_seen_before;
+    bool cleared = clear_seen_before || dps_jump || previous_dps_jump;
     clear_seen_before = false;
     for (int64_t c : program.clear_lines)
       if (c > std::min(previous_line, line) && c <= std::max(previous_line, line)) cleared = clear_seen_before = true;
@@ -261,6 +329,13 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     // lies within one cycle's travel of 0.
     if (!program.clear_lines.empty() && std::abs(dps) <= dps_step_limit * (1 + 1e-6)) cleared = true;
     const double change = dps - previous_dps, chord = std::sqrt(chord_sq);
+    if (search_state == block_search_state::repositioning) approach_mm += chord;
+    if ((searched || previous_search_state == block_search_state::repositioning) &&
+        search_state == block_search_state::continued && plc.last_search().at_stop) {
+      ++run.at_stop_searches;
+      run.at_stop_moved += approach_mm > 1e-3;
+      run.at_stop_approach_max_mm = std::max(run.at_stop_approach_max_mm, approach_mm);
+    }
     const double tol = 1e-9 + 1e-12 * std::abs(dps);
     if (!cleared) {
       if (!backward && !previous_backward && change < -tol)
@@ -275,12 +350,16 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       // A contouring curve a little longer than the blocks' parts it
       // replaces: 1e-4 of it in 1000 contoured programs (docs/CONTOURING.md).
       const double slower = program.contoured ? 1e-3 : 1e-6;
-      if (dps_counts_all && backward == previous_backward && std::abs(change) < chord * (1 - slower) - tol)
+      if (dps_counts_all && !repositioning && !approach_behind && backward == previous_backward &&
+          std::abs(change) < chord * (1 - slower) - tol)
         fail({"dist_prog_start", k, "", "dist_prog_start change (mm) in one cycle", change, chord, line,
               "less than the chord the main axes moved (DPS-1)"});
     }
     previous_dps = dps;
     previous_backward = backward;
+    previous_state = s.channel_state;
+    previous_search_state = search_state;
+    previous_dps_jump = dps_jump;
     previous_line = line;
     ddtg_requested = ddtg_requested || s.delete_distance_to_go.request_r || s.delete_distance_to_go.state_r;
     run.short_cut = run.short_cut || s.delete_distance_to_go_active_r;
@@ -308,15 +387,32 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   }
   if (run.finished) {
     if (end.channel_state != ChannelState::program_end &&
-        !(lift_command_not_skipped && end.channel_state == ChannelState::error))
+        !((lift_command_not_skipped || restart_refused) && end.channel_state == ChannelState::error))
       fail({"end", k, "", "", 0, 0, end.block_count_r, std::string("ended in ") + to_string(end.channel_state)});
     const std::vector<double> at_end = previous_position;
-    if (expectations && !motion_ended_early)
-      for (size_t i = 0; i < axes; ++i)
-        if (std::abs(at_end[i] - program.end_position[i]) > 1e-9)
-          fail({"end position", k, machine.axes[i].name, "position (mm)", at_end[i], program.end_position[i],
-                end.block_count_r, "the path did not end on the program's end point"});
-    const bool dps_comparable = !ddtg_requested && (!run.backward || dps_counts_all);
+    // After a reset the program ran again from where the axes stood (a
+    // search decodes it from there too): it ends where the decoder ends it
+    // from there (G91 before a position is programmed absolutely shifts it).
+    std::vector<double> end_point = program.end_position;
+    if (resets > 0) {
+      const cnc::DecodedProgram again = cnc::decode_program(program.text, machine, last_start_position);
+      for (auto b = again.blocks.rbegin(); b != again.blocks.rend(); ++b)
+        if (b->has_motion) {
+          end_point = b->motion.end;
+          break;
+        }
+    }
+    if (expectations && !motion_ended_early && !restart_refused)
+      for (size_t i = 0; i < axes; ++i) {
+        if (resets > 0 && program.lifts && i == 2) continue;  // Z lands on POS after a lift (LIFT-1)
+        if (std::abs(at_end[i] - end_point[i]) > 1e-9)
+          fail({"end position", k, machine.axes[i].name, "position (mm)", at_end[i], end_point[i],
+                end.block_count_r,
+                resets > 0 ? "the path did not end on the program's end point decoded from its last start"
+                           : "the path did not end on the program's end point"});
+      }
+    // After a reset the count started again where the program restarted.
+    const bool dps_comparable = !ddtg_requested && (!run.backward || dps_counts_all) && resets == 0;
     const double dps = end.dist_prog_start / hli_units_per_mm;
     if (expectations && dps_comparable &&
         std::abs(dps - program.dist_prog_start_end_mm) > 1e-6 + 1e-9 * program.path_length_mm)
@@ -393,7 +489,12 @@ std::string serialise(const FuzzRun& run) {
                    static_cast<double>(run.plc.feedhold_edges), static_cast<double>(run.plc.override_changes),
                    static_cast<double>(run.plc.ddtg_edges), static_cast<double>(run.plc.backward_toggles),
                    static_cast<double>(run.plc.m_acks), static_cast<double>(run.plc.insert_commands),
-                   static_cast<double>(run.plc.insert_stops), static_cast<double>(run.failures.size()),
+                   static_cast<double>(run.plc.insert_stops), static_cast<double>(run.plc.resets),
+                   static_cast<double>(run.plc.searches), static_cast<double>(run.plc.search_errors),
+                   static_cast<double>(run.search_error_events), static_cast<double>(run.at_stop_searches),
+                   static_cast<double>(run.at_stop_moved), run.at_stop_approach_max_mm,
+                   static_cast<double>(run.restart_decode_errors),
+                   static_cast<double>(run.failures.size()),
                    static_cast<double>(run.event_log.size())})
     put(out, x);
   for (const std::string& e : run.event_log) put(out, e);
@@ -426,6 +527,14 @@ bool deserialise(const std::string& in, FuzzRun& run) {
   run.plc.m_acks = count();
   run.plc.insert_commands = count();
   run.plc.insert_stops = count();
+  run.plc.resets = count();
+  run.plc.searches = count();
+  run.plc.search_errors = count();
+  run.search_error_events = count();
+  run.at_stop_searches = count();
+  run.at_stop_moved = count();
+  run.at_stop_approach_max_mm = r.number();
+  run.restart_decode_errors = count();
   const int64_t failures = count();
   const int64_t logged = count();
   run.event_log.clear();

@@ -41,6 +41,19 @@
 //    phase, then 1.5 x (every block rest to rest at 30 % override, one
 //    short cut across the program's extent at its slowest feed and 30 %,
 //    the dwells, 8 ms per M function, 2 s) + 1000 cycles;
+//  - DPS-3 (resets and block searches by the PLC): the cycle a reset acts
+//    (reset.state_r: dist_prog_start 0) and the cycle a program starts (a
+//    search presets the continuation's distance), and the cycles after
+//    them, are exempt from the dist_prog_start steps; no chord while
+//    repositioning (the approach covers no distance), nor after backward
+//    motion following a search (the path may run back onto the approach);
+//    the error event of a failed search (state 3 in that cycle) is allowed,
+//    no other; a type 4 search continues at the distance asked (or, moved
+//    to the block's start, at a larger one) and presets dist_prog_start to
+//    it; each reset adds a whole calm run to the cycle bound; after a reset
+//    the end point is the decoder's from where the axes stood at the last
+//    start (Z of lift programs left out) and the final dist_prog_start is
+//    not compared;
 //  - at the end the axes stand on the program's end point within 1e-9 mm
 //    (unless a short cut ended motion early, 50810, DDTG-6); after a run
 //    without delete distance to go requests and (with OFF/CLEAR in the
@@ -67,6 +80,9 @@ struct FuzzOptions {
   // Random insert stop commands (ISC-1 .. ISC-9) from the PLC, on a random
   // stream of their own: false runs every seed exactly as before them.
   bool insert_stops = true;
+  // Resets with block searches (DPS-3) from the PLC, on a random stream of
+  // their own: false runs every seed exactly as before them.
+  bool block_search = true;
   // Called after every step (the bench's --trace).
   std::function<void(int64_t cycle, const cnc::Channel& channel, const HliControl& control)> observer;
   // Instead of the generated program, this text (a shrunk one, the bench's
@@ -90,6 +106,7 @@ struct Failure {
 struct PlcCounts {
   int64_t feedhold_edges = 0, override_changes = 0, ddtg_edges = 0, backward_toggles = 0, m_acks = 0;
   int64_t insert_commands = 0, insert_stops = 0;  // ISC: commands written with the semaphore, stops continued
+  int64_t resets = 0, searches = 0, search_errors = 0;  // DPS-3: resets that acted, searching starts, state 3
 };
 
 struct FuzzRun {
@@ -99,6 +116,7 @@ struct FuzzRun {
   int32_t override_max_percent = 100;
   int64_t chaos_cycles = 0;  // the random PLC phase; calm after it
   int64_t cycle_bound = 0;
+  int64_t restart_cycles = 0;  // added to the bound for each reset that acted (DPS-3): a whole calm run
   int64_t last_motion_line = 0;
   int64_t cycles = 0;        // stepped
   bool finished = false;
@@ -106,6 +124,15 @@ struct FuzzRun {
   // What the run went through (from the HLI).
   bool short_cut = false, backward = false, m_output = false;
   int64_t events = 0;
+  int64_t search_error_events = 0;  // DPS-3: error events of failed block searches (allowed)
+  // DPS-3: type 4 searches at what the PLC read at the stop that found a
+  // continuation; of them, those whose approach moved the axes more than
+  // 1 um (the starting movement counts, docs/BLOCK_SEARCH.md), the longest.
+  int64_t at_stop_searches = 0, at_stop_moved = 0;
+  double at_stop_approach_max_mm = 0;
+  // Starts and searches after a reset whose decoding from where the axes
+  // stood failed (a first arc or G91 motion valid only from 0): expected.
+  int64_t restart_decode_errors = 0;
   std::vector<std::string> event_log;  // the first events: "cycle k: <event>"
   PlcCounts plc;
   std::vector<Failure> failures;

@@ -1,7 +1,7 @@
 #pragma once
 // The channel fuzz's PLC (KRN-4): feed hold, override, delete distance to
-// go, backward motion, M acknowledgements and insert stop commands at
-// random, then calm.
+// go, backward motion, M acknowledgements, insert stop commands and resets
+// with block searches (DPS-3) at random, then calm.
 #include <algorithm>
 #include <cstdint>
 
@@ -18,10 +18,20 @@ constexpr int32_t calm_override_min = 300;
 // often, how late it acknowledges), random until `chaos_end`, calm after.
 class FuzzPlc {
  public:
+  // What the PLC last asked a block search for (DPS-3).
+  struct SearchRequest {
+    bool at_stop = false;  // type 4 at block_nr_r and dist_prog_start read at the stop (not on an approach)
+    BlockSearchCommand command;
+  };
+
   // Override values up to 120 %: above the machine's override_max_percent
   // the channel clamps them (with a warning).
-  FuzzPlc(uint64_t seed, int64_t chaos_end, bool insert_stops)
-      : rng_(seed), insert_rng_(seed ^ 0x15c0ffee), chaos_end_(chaos_end), insert_stops_(insert_stops) {
+  // `lines`: the program's NC lines (line i has N<10 i>): random block numbers to search.
+  FuzzPlc(uint64_t seed, int64_t chaos_end, bool insert_stops, bool block_search = false, int64_t lines = 0)
+      : rng_(seed), insert_rng_(seed ^ 0x15c0ffee), search_rng_(seed ^ 0x5ea4c4),
+        chaos_end_(chaos_end), insert_stops_(insert_stops), block_search_(block_search), lines_(lines) {
+    use_search_ = search_rng_.chance(0.35);
+    search_chance_ = search_rng_.log_uniform(0.002, 0.2);
     use_insert_ = insert_rng_.chance(0.6);
     insert_mean_ = insert_rng_.log_uniform(20, 2000);
     continue_delay_max_ = insert_rng_.chance(0.5) ? 3 : 400;
@@ -47,6 +57,8 @@ class FuzzPlc {
   }
 
   const PlcCounts& counts() const { return counts_; }
+  // The last block search asked for (DPS-3).
+  const SearchRequest& last_search() const { return last_search_; }
   // The answer to the state of cycle k, applied by step k + 1.
   void answer(int64_t k, const HliState& s, HliControl& c) {
     c.cycle = k;
@@ -104,6 +116,7 @@ class FuzzPlc {
     }
     acknowledge(k, s, c, chaos);
     if (insert_stops_) insert(k, s, c, chaos);
+    if (block_search_) reset_and_search(k, s, c, chaos);
   }
 
   // The M function of an insert stop mark (M<n>, ISC-5).
@@ -158,6 +171,74 @@ class FuzzPlc {
     ++counts_.insert_commands;
   }
 
+  // DPS-3: with the path standing under feed hold, a reset, then a block
+  // search mostly at what was read at the stop (block_nr_r,
+  // dist_prog_start), sometimes type 1, another distance or another block
+  // (errors allowed), and a program start; a search that failed (state 3,
+  // the channel READY) is followed by a start without a search. Calm: a
+  // channel left READY is started. program_start.command_w is false at the
+  // top of answer(): an edge needs the cycle before it false.
+  void reset_and_search(int64_t k, const HliState& s, HliControl& c, bool chaos) {
+    c.reset.enable_w = true;
+    c.reset.command_w = false;
+    const bool start_edge_possible = k > last_start_ + 1;  // the answer after an edge's is false
+    auto start = [&](bool search) {
+      c.block_search.enable_w = search;
+      c.program_start = {true, true};
+      last_start_ = k;
+    };
+    switch (search_phase_) {
+      case SearchPhase::idle:
+        if (chaos && use_search_ && resets_given_ < 3 && s.channel_state == ChannelState::active &&
+            s.path_velocity == 0 && s.feedhold.state_r && search_rng_.chance(search_chance_)) {
+          stop_block_nr_ = s.block_nr_r;
+          stop_distance_ = s.dist_prog_start;
+          // Standing on an approach, dist_prog_start shows the continuation's distance, not where the path stands.
+          read_on_approach_ = s.block_search.state_r.state == block_search_state::repositioning;
+          c.reset = {true, true};
+          ++resets_given_;
+          search_phase_ = SearchPhase::reset_given;
+        } else if (!chaos && s.channel_state == ChannelState::ready && start_edge_possible) {
+          start(false);  // calm: a channel left READY after a reset runs the program
+        }
+        return;
+      case SearchPhase::reset_given:
+        if (s.channel_state != ChannelState::ready) {  // ignored: the path moved (a warning)
+          search_phase_ = SearchPhase::idle;
+          return;
+        }
+        if (s.reset.state_r) ++counts_.resets;
+        if (!start_edge_possible) return;
+        {
+          const size_t which = search_rng_.pick({0.7, 0.1, 0.1, 0.1});
+          BlockSearchCommand& w = c.block_search.command_w;
+          w.type = which == 1 ? 1 : 4;
+          w.block_nr = static_cast<uint32_t>(which == 3 ? 10 * search_rng_.integer(1, lines_ + 1) : stop_block_nr_);
+          w.distance = which == 2 ? search_rng_.uniform(0, 1.5 * stop_distance_) : stop_distance_;
+          last_search_.at_stop = which == 0 && !read_on_approach_;
+          last_search_.command = w;
+        }
+        start(true);
+        ++counts_.searches;
+        search_phase_ = SearchPhase::search_started;
+        return;
+      case SearchPhase::search_started:
+        c.block_search.enable_w = false;
+        if (s.block_search.state_r.state == block_search_state::error) {
+          ++counts_.search_errors;
+          search_phase_ = SearchPhase::start_after_error;
+        } else {
+          search_phase_ = SearchPhase::idle;
+        }
+        return;
+      case SearchPhase::start_after_error:
+        if (!start_edge_possible) return;
+        start(false);  // from the program's start, where the axes stand
+        search_phase_ = SearchPhase::idle;
+        return;
+    }
+  }
+
   // A rising edge of m_function_ack.command_w (one cycle long) a random
   // delay after m_function_request_r shows; a request still shown after an
   // edge is a new one (or the old one, if the edge came without enable_w).
@@ -182,8 +263,21 @@ class FuzzPlc {
 
   Rng rng_;
   Rng insert_rng_;
+  Rng search_rng_;
   int64_t chaos_end_;
   bool insert_stops_;
+  bool block_search_;
+  int64_t lines_;
+  enum class SearchPhase { idle, reset_given, search_started, start_after_error };
+  SearchPhase search_phase_ = SearchPhase::idle;
+  bool use_search_ = false;
+  double search_chance_ = 0;
+  int resets_given_ = 0;
+  int64_t last_start_ = 0;  // the answer that gave the last start edge (cycle 0's start is before answer 0)
+  int64_t stop_block_nr_ = 0;
+  double stop_distance_ = 0;
+  bool read_on_approach_ = false;
+  SearchRequest last_search_;
   bool use_insert_ = false, cleared_ = false;
   double insert_mean_ = 0;
   int64_t continue_delay_max_ = 3, next_insert_ = 0, continue_at_ = -1;

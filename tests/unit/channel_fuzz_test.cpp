@@ -33,7 +33,7 @@ TEST_CASE("channel fuzz: the generator writes programs the decoder takes, the sa
 namespace {
 
 struct SeedRange {
-  int64_t runs = 0, cycles = 0, failed = 0, short_cuts = 0, backward = 0, m_output = 0;
+  int64_t runs = 0, cycles = 0, failed = 0, short_cuts = 0, backward = 0, m_output = 0, resets = 0, searches = 0;
 };
 
 // Runs seeds first .. first + runs - 1, reports every failure (at most 40)
@@ -58,6 +58,11 @@ SeedRange run_seeds(int64_t first, int64_t runs, const FuzzOptions& options, con
     plc.m_acks += run.plc.m_acks;
     plc.insert_commands += run.plc.insert_commands;
     plc.insert_stops += run.plc.insert_stops;
+    plc.resets += run.plc.resets;
+    plc.searches += run.plc.searches;
+    plc.search_errors += run.plc.search_errors;
+    r.resets += run.plc.resets;
+    r.searches += run.plc.searches;
     if (run.passed()) continue;
     ++r.failed;
     for (const Failure& f : run.failures)
@@ -72,7 +77,8 @@ SeedRange run_seeds(int64_t first, int64_t runs, const FuzzOptions& options, con
             << plc.feedhold_edges << " feed hold edges, " << plc.override_changes << " override changes, "
             << plc.ddtg_edges << " delete distance to go edges, " << plc.backward_toggles
             << " backward motion toggles, " << plc.m_acks << " M acknowledgements, " << plc.insert_commands
-            << " insert stop commands, " << plc.insert_stops << " stops continued), " << r.short_cuts
+            << " insert stop commands, " << plc.insert_stops << " stops continued, " << plc.resets << " resets, "
+            << plc.searches << " block searches, " << plc.search_errors << " of them failed), " << r.short_cuts
             << " with a short cut, " << r.backward << " with backward motion, " << r.m_output
             << " with M functions; " << r.failed << " failed\n";
   return r;
@@ -80,16 +86,17 @@ SeedRange run_seeds(int64_t first, int64_t runs, const FuzzOptions& options, con
 
 }  // namespace
 
-TEST_CASE("KRN-3 DDTG-1 KRN-5 DPS-1 ISC-3 channel fuzz: random programs and PLC edges keep every axis' limits and "
+TEST_CASE("KRN-3 DDTG-1 KRN-5 DPS-1 ISC-3 DPS-3 channel fuzz: random programs and PLC edges keep every axis' limits and "
           "the channel's invariants, cycle by cycle",
           "[fuzz]") {
   // Seeds 1 .. 2500, the program kinds in turn (mixed, lines, arcs, steps,
   // commands), each with its random PLC (feed hold, override 0 .. 120 %,
   // delete distance to go with and without activation masks, backward
-  // motion, late M acknowledgements, insert stop commands), checked as
-  // tests/fuzz/channel_fuzz.hpp says.
+  // motion, late M acknowledgements, insert stop commands, resets with
+  // block searches), checked as tests/fuzz/channel_fuzz.hpp says.
   const SeedRange r = run_seeds(1, 2500, FuzzOptions{}, "all kinds");
   CHECK(r.failed == 0);
+  CHECK(r.searches > r.runs / 20);  // DPS-3
   // The fuzz reaches what it is for.
   CHECK(r.short_cuts > r.runs / 10);
   CHECK(r.backward > r.runs / 10);

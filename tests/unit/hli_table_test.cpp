@@ -50,8 +50,11 @@ void check_every_field(RoundTrip round_trip) {
 }  // namespace
 
 TEST_CASE("KRN-4 HLI table: every control field written by name reaches the LCM message and back", "[hli]") {
-  // 9 control units with command_w and enable_w; insert_cmd (ISC-1): 5 command_w fields, enable_w, semaphor_rw.
-  CHECK(hli_fields<HliControl>().size() == 25);
+  // 10 control units with command_w and enable_w (reset included); insert_cmd (ISC-1): 5 command_w fields,
+  // enable_w, semaphor_rw; block_search (DPS-3): 3 command_w fields, enable_w.
+  CHECK(hli_fields<HliControl>().size() == 31);
+  CHECK(find_hli_field<HliControl>("reset.command_w") != nullptr);
+  CHECK(find_hli_field<HliControl>("block_search.enable_w") != nullptr);
   CHECK(std::string(find_hli_field<HliControl>("insert_cmd.command_w.dist_or_pos")->type) == "LREAL");
   CHECK(std::string(find_hli_field<HliControl>("insert_cmd.command_w.rel_abs_mode")->type) == "UINT");
   CHECK(std::string(find_hli_field<HliControl>("insert_cmd.command_w.add_nr")->type) == "DINT");

@@ -477,3 +477,37 @@ TEST_CASE("LIFT-2 RIG-3 a drive error while Advanced Lifting lifts: the channel 
   CHECK(rig.z[n - 2] == Approx(rig.z[n - 3]).margin(1e-9));
   rig.require_within_limits();
 }
+
+// Found by the channel fuzz (lift seed 278, PLC resetting, DPS-3): a feed
+// hold stands the path, but the Advanced Lifting axis goes on rising in
+// time; a reset then stopped it dead (jerk 15.8e6 mm/s^3). It is ignored
+// (a warning) until the lift axis stands too.
+TEST_CASE("DPS-3 LIFT-2 channel: a reset while the path stands but the lift axis still moves is ignored",
+          "[DPS-3][channel][lift]") {
+  LiftRig rig(cross_block, test::xyz_lift_machine());
+  rig.control.reset.enable_w = true;
+  rig.start();
+  rig.run_until([&] { return rig.hli().lift_active[Z]; });
+  rig.control.feedhold.command_w = true;
+  rig.run_until([&] { return rig.hli().feedhold.state_r && rig.hli().path_velocity == 0; });
+  REQUIRE(rig.channel.setpoints()[Z].velocity != 0);  // the lift axis still rises
+  rig.channel.take_events();
+  rig.control.reset.command_w = true;
+  rig.step();
+  CHECK(rig.hli().channel_state == ChannelState::active);
+  CHECK_FALSE(rig.hli().reset.state_r);
+  bool warned = false;
+  for (const Event& e : rig.channel.take_events()) warned = warned || e.message.rfind("reset ignored", 0) == 0;
+  CHECK(warned);
+  rig.control.reset.command_w = false;
+  rig.run_until([&] {
+    return std::abs(rig.channel.setpoints()[Z].velocity) < 1e-9 && std::abs(rig.channel.setpoints()[Z].acceleration) < 1e-9;
+  });
+  REQUIRE(rig.k < 100000);
+  rig.control.reset.command_w = true;  // the lift axis stands now: the reset acts
+  rig.step();
+  CHECK(rig.hli().reset.state_r);
+  CHECK(rig.hli().channel_state == ChannelState::ready);
+  for (int i = 0; i < 50; ++i) rig.step();
+  rig.require_within_limits();
+}
