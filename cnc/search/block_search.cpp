@@ -11,6 +11,11 @@
 namespace hil::cnc {
 namespace {
 
+// A distance read where a block begins may lie a round-off below the
+// search's own sum there (the run adds the same lengths in another order):
+// that is the block's start, no position already skipped.
+constexpr double round_off_mm = 1e-9;
+
 std::string mm_text(double value) {
   std::ostringstream text;
   text.precision(10);
@@ -109,7 +114,7 @@ BlockSearchOutcome search_block(const std::vector<Block>& blocks, const BlockSea
   c.distance_counting = count.counting;
   const Block& limit = blocks[searched];
 
-  if (by_distance && distance < count.mm) {
+  if (by_distance && distance < count.mm - round_off_mm) {
     // The text: moving the continuation back to a position already skipped is prevented, with a warning.
     c.warning = search_event(Severity::warning, &limit,
                              "block search: distance " + mm_text(distance) + " lies before block " +

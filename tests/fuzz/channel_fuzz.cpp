@@ -275,7 +275,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       if (asked.type == 4 && !found.continuation_moved && std::abs(cont_mm - asked_mm) > 1e-9 + 1e-12 * asked_mm)
         fail({"block search", k, "", "continuation_distance (mm)", cont_mm, asked_mm, line,
               "a type 4 search continues at another distance than asked"});
-      // A distance read at a block's start may lie a round-off below the search's sum there (a warning).
+      // Moved to the block's start only if the distance lay before it (a round-off below is its start, no move).
       if (asked.type == 4 && found.continuation_moved && !(cont_mm > asked_mm - 1e-9 - 1e-12 * asked_mm))
         fail({"block search", k, "", "continuation_distance (mm)", cont_mm, asked_mm, line,
               "moved to the block's start, but the distance did not lie before it"});

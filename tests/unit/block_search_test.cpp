@@ -144,6 +144,14 @@ TEST_CASE("DPS-3 a distance before the searched block: a warning, the continuati
   CHECK(c.distance_mm == 10);
 }
 
+TEST_CASE("DPS-3 a distance a round-off below the searched block's start is its start, no warning", "[DPS-3]") {
+  const std::vector<Block> blocks = decoded(example);
+  const Continuation c = found(search(blocks, 30, 10 - 1e-10));
+  CHECK_FALSE(c.warning);
+  CHECK(c.at_block_start);
+  CHECK(blocks[c.block].block_nr == 30);
+}
+
 TEST_CASE("DPS-3 G74, G100, #FLUSH WAIT between the searched block and the continuation: error naming its line",
           "[DPS-3]") {
   MachineConfig machine = test::xyz_machine();
