@@ -22,36 +22,62 @@ std::optional<Identity> identity(const void* data, uint32_t size) {
   return Identity{m.run_id, m.cycle};
 }
 
-}  // namespace
+int64_t big_endian_64(const uint8_t* p) {
+  uint64_t v = 0;
+  for (int i = 0; i < 8; ++i) v = v << 8 | p[i];
+  return static_cast<int64_t>(v);
+}
 
-std::optional<Identity> identify(const std::string& channel, const void* data, uint32_t size) {
-  if (channel == channels::hli_state) return identity<hil::hli_state_t>(data, size);
-  if (channel == channels::hli_control) return identity<hil::hli_control_t>(data, size);
-  if (channel == channels::event) return identity<hil::event_t>(data, size);
-  if (channel == channels::participant) return identity<hil::participant_t>(data, size);
-  if (channel == channels::manifest) return identity<hil::run_manifest_t>(data, size);
-  if (channel == channels::scenario) return identity<hil::scenario_text_t>(data, size);
-  if (channel == channels::log_end) return identity<hil::log_summary_t>(data, size);
-  if (!channels::axis_of_command(channel).empty()) return identity<hil::axis_setpoint_t>(data, size);
-  if (!channels::axis_of_state(channel).empty()) return identity<hil::axis_state_t>(data, size);
+// Every rig type begins with its fingerprint, run_id, utime and cycle (lcmtypes/).
+template <typename Message>
+std::optional<Identity> header(const void* data, uint32_t size) {
+  const auto* p = static_cast<const uint8_t*>(data);
+  if (size < 32 || big_endian_64(p) != Message::getHash()) return std::nullopt;
+  return Identity{big_endian_64(p + 8), big_endian_64(p + 24)};
+}
+
+template <typename T>
+struct Type {
+  using type = T;
+};
+
+// read(Type<M>{}) with M the rig channel's type; none for another channel.
+template <typename Read>
+std::optional<Identity> as_channel_type(const std::string& channel, Read read) {
+  if (channel == channels::hli_state) return read(Type<hil::hli_state_t>{});
+  if (channel == channels::hli_control) return read(Type<hil::hli_control_t>{});
+  if (channel == channels::event) return read(Type<hil::event_t>{});
+  if (channel == channels::participant) return read(Type<hil::participant_t>{});
+  if (channel == channels::manifest) return read(Type<hil::run_manifest_t>{});
+  if (channel == channels::scenario) return read(Type<hil::scenario_text_t>{});
+  if (channel == channels::log_end) return read(Type<hil::log_summary_t>{});
+  if (!channels::axis_of_command(channel).empty()) return read(Type<hil::axis_setpoint_t>{});
+  if (!channels::axis_of_state(channel).empty()) return read(Type<hil::axis_state_t>{});
   return std::nullopt;
 }
 
-Inbox::~Inbox() {
-  for (lcm::Subscription* s : subscriptions_) lcm_.unsubscribe(s);
+}  // namespace
+
+std::optional<Identity> identify(const std::string& channel, const void* data, uint32_t size) {
+  return as_channel_type(channel, [&](auto type) { return identity<typename decltype(type)::type>(data, size); });
 }
 
-void Inbox::route(const std::string& channel, int queue_capacity, Handler handle) {
-  routes_.push_back(std::make_unique<Route>(Route{this, std::move(handle)}));
-  lcm::Subscription* s = lcm_.subscribeFunction(
+std::optional<Identity> identify_header(const std::string& channel, const void* data, uint32_t size) {
+  return as_channel_type(channel, [&](auto type) { return header<typename decltype(type)::type>(data, size); });
+}
+
+Inbox::~Inbox() {
+  for (int id : subscriptions_) bus_.unsubscribe(id);
+}
+
+void Inbox::route(const std::string& channel, int queue_capacity, Bus::Handler handle) {
+  subscriptions_.push_back(bus_.subscribe(
       channel,
-      +[](const lcm::ReceiveBuffer* rbuf, const std::string& ch, Route* route) {
-        if (!framed(*rbuf)) return route->inbox->ledger_.refuse(traffic::malformed_datagram, traffic::Refusal::undecodable);
-        route->handle(*rbuf, ch);
+      [this, handle = std::move(handle)](const lcm::ReceiveBuffer& rbuf, const std::string& ch) {
+        if (!framed(rbuf)) return ledger_.refuse(traffic::malformed_datagram, traffic::Refusal::undecodable);
+        handle(rbuf, ch);
       },
-      routes_.back().get());
-  s->setQueueCapacity(queue_capacity);
-  subscriptions_.push_back(s);
+      queue_capacity));
 }
 
 std::vector<hil::traffic_count_t> to_message(const traffic::Ledger& ledger) {

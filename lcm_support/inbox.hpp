@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bus.hpp"
 #include "traffic.hpp"
 
 namespace hil::lcm_support {
@@ -36,10 +37,14 @@ struct Identity {
 // Decodes as the rig channel's type; none for bytes that are not, or for a
 // channel the rig does not use.
 std::optional<Identity> identify(const std::string& channel, const void* data, uint32_t size);
+// The same from the type's fingerprint and the header every rig type begins
+// with, without decoding the rest: for bytes a node encoded in this process
+// (the in-process bus), which no network can have cut or forged.
+std::optional<Identity> identify_header(const std::string& channel, const void* data, uint32_t size);
 
 class Inbox {
  public:
-  Inbox(lcm::LCM& lcm, int64_t run_id) : lcm_(lcm), run_id_(run_id) {}
+  Inbox(Bus& bus, int64_t run_id) : bus_(bus), run_id_(run_id) {}
   Inbox(const Inbox&) = delete;
   Inbox& operator=(const Inbox&) = delete;
   ~Inbox();
@@ -59,25 +64,20 @@ class Inbox {
   }
 
   int64_t run_id() const { return run_id_; }
+  Bus& bus() { return bus_; }
   // Messages taken so far: what tells a node its run is still alive (another
   // rig's traffic on the port must not).
   int64_t taken() const { return taken_; }
   const traffic::Ledger& ledger() const { return ledger_; }
 
  private:
-  using Handler = std::function<void(const lcm::ReceiveBuffer&, const std::string&)>;
-  struct Route {
-    Inbox* inbox;
-    Handler handle;
-  };
-  void route(const std::string& channel, int queue_capacity, Handler handle);
+  void route(const std::string& channel, int queue_capacity, Bus::Handler handle);
 
-  lcm::LCM& lcm_;
+  Bus& bus_;
   int64_t run_id_;
   traffic::Ledger ledger_;
   int64_t taken_ = 0;
-  std::vector<std::unique_ptr<Route>> routes_;
-  std::vector<lcm::Subscription*> subscriptions_;
+  std::vector<int> subscriptions_;
 };
 
 std::vector<hil::traffic_count_t> to_message(const traffic::Ledger& ledger);

@@ -8,12 +8,7 @@
 
 namespace hil::lcm_support {
 
-void require_good(const lcm::LCM& lcm, const std::string& url) {
-  if (!lcm.good()) throw std::runtime_error("cannot open LCM on " + url);
-}
-
-Participant::Participant(lcm::LCM& lcm, Inbox& inbox, std::string name)
-    : lcm_(lcm), inbox_(inbox), name_(std::move(name)) {
+Participant::Participant(Inbox& inbox, std::string name) : inbox_(inbox), name_(std::move(name)) {
   inbox_.on<hil::run_manifest_t>(channels::manifest, [this](const hil::run_manifest_t& m, const lcm::ReceiveBuffer&) {
     if (started_) return false;  // the CNC sends one
     manifest_ = m;
@@ -40,8 +35,10 @@ void Participant::announce(int8_t phase, int64_t cycle, int32_t verdicts) {
   if (phase == hil::participant_t::PHASE_RUN_END) m.rejected = to_message(inbox_.ledger());
   m.n_rejected = static_cast<int16_t>(m.rejected.size());
   m.n_lost = 0;
-  lcm_.publish(channels::participant, &m);
+  inbox_.bus().publish(channels::participant, m);
 }
+
+void Participant::announce_ready() { announce(hil::participant_t::PHASE_READY, 0, 0); }
 
 void Participant::announce_end(int64_t cycle, int32_t verdicts) {
   announce(hil::participant_t::PHASE_RUN_END, cycle, verdicts);
@@ -61,10 +58,10 @@ bool Participant::wait_for_start(std::chrono::milliseconds timeout) {
     // On a timer, not per message received: answering every READY with a
     // READY would flood the bus.
     if (now >= next_announce) {
-      announce(hil::participant_t::PHASE_READY, 0, 0);
+      announce_ready();
       next_announce = now + std::chrono::milliseconds(50);
     }
-    if (lcm_.handleTimeout(10) < 0) throw std::runtime_error("LCM receive failed");
+    if (inbox_.bus().handle_timeout(10) < 0) throw std::runtime_error("LCM receive failed");
   }
   return true;
 }
@@ -74,7 +71,7 @@ bool Participant::serve_until_end(std::chrono::milliseconds silence) {
   auto last = clock::now();
   int64_t taken = inbox_.taken();
   while (!ended_) {
-    if (lcm_.handleTimeout(100) < 0) throw std::runtime_error("LCM receive failed");
+    if (inbox_.bus().handle_timeout(100) < 0) throw std::runtime_error("LCM receive failed");
     if (inbox_.taken() != taken) {
       taken = inbox_.taken();
       last = clock::now();

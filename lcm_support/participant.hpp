@@ -4,7 +4,6 @@
 // this run's CNC announces its end. Announcements and manifests of other
 // runs are refused (counted in the inbox's ledger).
 #include <hil/run_manifest_t.hpp>
-#include <lcm/lcm-cpp.hpp>
 
 #include <chrono>
 #include <string>
@@ -15,8 +14,10 @@ namespace hil::lcm_support {
 
 class Participant {
  public:
-  Participant(lcm::LCM& lcm, Inbox& inbox, std::string name);
+  Participant(Inbox& inbox, std::string name);
 
+  // Once; wait_for_start repeats it.
+  void announce_ready();
   // Announces READY until the CNC's manifest arrives; false after `timeout`.
   bool wait_for_start(std::chrono::milliseconds timeout);
   // Handles messages until the CNC's RUN_END; false if `silence` passes
@@ -37,7 +38,6 @@ class Participant {
  private:
   void announce(int8_t phase, int64_t cycle, int32_t verdicts);
 
-  lcm::LCM& lcm_;
   Inbox& inbox_;
   std::string name_;
   bool started_ = false;
@@ -46,7 +46,5 @@ class Participant {
   hil::run_manifest_t manifest_;
 };
 
-// An LCM instance on `url`, or an exception naming it.
-void require_good(const lcm::LCM& lcm, const std::string& url);
 
 }  // namespace hil::lcm_support

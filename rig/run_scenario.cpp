@@ -13,6 +13,7 @@
 
 #include "config_error.hpp"
 #include "drive_model.hpp"
+#include "in_process_run.hpp"
 #include "plots.hpp"
 #include "process.hpp"
 #include "report.hpp"
@@ -71,21 +72,16 @@ void validate(const Scenario& scenario) {
   }
 }
 
-// One run of the rig in `run_dir`; `figures` (if given) gets the run's
-// figures for the comparison of variants.
-RunResult run_one(const Scenario& scenario, const std::string& run_dir, const RunOptions& options,
-                  const std::string& variant, VariantFigures* figures) {
-  RunResult result;
-  result.run_dir = run_dir;
-  fs::create_directories(result.run_dir);
-  const fs::path dir = fs::absolute(result.run_dir);
-  const std::string resolved = write_resolved(scenario, dir);
-  result.log_file = (dir / "run.lcmlog").string();
-  fs::remove(result.log_file);
+int rig_port(const RunOptions& options) {
+  return options.port > 0 ? options.port : 20000 + static_cast<int>(::getpid() % 20000);
+}
 
-  const int port = options.port > 0 ? options.port : 20000 + static_cast<int>(::getpid() % 20000);
-  const std::string url = rig_url(port);
-  const std::string run_id = std::to_string(new_run_id());
+// Every node a process of its own on a private udpm port; returns their
+// exit statuses and says them in `processes`.
+std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const fs::path& dir, const std::string& resolved,
+                                               const std::string& log_file, const RunOptions& options,
+                                               const std::string& run_id, std::ostringstream& processes) {
+  const std::string url = rig_url(rig_port(options));
   const fs::path bin = options.bin_dir;
   auto node_output = [&](const std::string& name) { return (dir / (name + ".out")).string(); };
   auto node_args = [&](const std::string& exe) {
@@ -94,7 +90,7 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
 
   // The logger is told every participant: it records until each has ended,
   // whenever it came up itself.
-  std::vector<std::string> logger_args = {(bin / "hil_logger").string(), "--url", url, "--out", result.log_file,
+  std::vector<std::string> logger_args = {(bin / "hil_logger").string(), "--url", url, "--out", log_file,
                                           "--run-id", run_id, "--scenario", resolved, "--participants", "cnc",
                                           "plc_sim"};
   for (const AxisConfig& axis : scenario.machine.axes) logger_args.push_back("axis_sim " + axis.name);
@@ -124,7 +120,6 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   std::vector<logger::ProcessExit> exits{{"cnc", cnc_status}};
-  std::ostringstream processes;
   processes << "cnc " << (cnc_status ? std::to_string(*cnc_status) : "hung, killed: " + std::to_string(cnc.stop()));
   for (size_t i = 0; i < nodes.size(); ++i) {
     Process& node = *nodes[i];
@@ -135,6 +130,36 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
     if (exited_during_run[i])
       processes << " (" << std::fixed << std::setprecision(1) << *exited_during_run[i]
                 << " s into the run, while the cnc ran)" << std::defaultfloat;
+  }
+  return exits;
+}
+
+// One run of the rig in `run_dir`; `figures` (if given) gets the run's
+// figures for the comparison of variants.
+RunResult run_one(const Scenario& scenario, const std::string& run_dir, const RunOptions& options,
+                  const std::string& variant, VariantFigures* figures) {
+  RunResult result;
+  result.run_dir = run_dir;
+  fs::create_directories(result.run_dir);
+  const fs::path dir = fs::absolute(result.run_dir);
+  const std::string resolved = write_resolved(scenario, dir);
+  result.log_file = (dir / "run.lcmlog").string();
+  fs::remove(result.log_file);
+
+  const std::string run_id = std::to_string(new_run_id());
+  const auto wall_start = std::chrono::steady_clock::now();
+  auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
+  std::vector<logger::ProcessExit> exits;
+  std::ostringstream processes;
+  std::string where;
+  if (options.in_process) {
+    where = "in-process (every node in the hil process, no network)";
+    exits = run_in_process(resolved, result.log_file, (dir / "nodes.out").string(), std::stoll(run_id));
+    for (const logger::ProcessExit& e : exits)
+      processes << (e.name == "cnc" ? "" : ", ") << e.name << ' ' << (e.status ? std::to_string(*e.status) : "?");
+  } else {
+    where = "LCM: " + rig_url(rig_port(options));
+    exits = run_processes(scenario, dir, resolved, result.log_file, options, run_id, processes);
   }
   const double run_wall_s = wall_s();
 
@@ -176,7 +201,7 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
   for (const std::string& reason : verdict.reasons) out << "  because " << reason << '\n';
   const std::vector<std::string> problems = logger::log_problems(log.facts);
   out << "run folder: " << result.run_dir << '\n'
-      << "LCM: " << url << ", run id " << run_id << '\n'
+      << where << ", run id " << run_id << '\n'
       << "log: " << result.log_file << " (" << messages << " messages, " << log.last_cycle + 1 << " cycles = "
       << simulated_s << " s simulated in " << run_wall_s << " s wall, " << simulated_s / run_wall_s
       << " x real time)\n"

@@ -11,6 +11,7 @@ struct RunOptions {
   int port = 0;              // 0 = derived from the process id
   std::string bin_dir;       // where cnc, axis_sim, plc_sim, hil_logger are
   bool quiet = false;        // summary line only
+  bool in_process = false;   // every node in this process on the in-process bus (in_process_run.hpp)
 };
 
 struct RunResult {

@@ -1,0 +1,195 @@
+#include "cnc_node.hpp"
+
+#include <hil/axis_state_t.hpp>
+#include <hil/hli_control_t.hpp>
+#include <hil/participant_t.hpp>
+#include <hil/run_manifest_t.hpp>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <set>
+
+#include "channel.hpp"
+#include "channels.hpp"
+#include "cycle_loop.hpp"
+#include "cycle_messages.hpp"
+#include "inbox.hpp"
+#include "lock_step.hpp"
+#include "messages.hpp"
+#include "run_identity.hpp"
+
+namespace hil::cnc_node {
+namespace {
+
+using clock_type = std::chrono::steady_clock;
+
+int64_t wall_us() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// RIG-6 lock-step over LCM: the CNC is the clock master; each cycle's
+// output is published, and the answers to it are every axis' and the PLC's
+// message for that cycle, waited for (the watchdog loses a silent one).
+class CncNode : public cnc::CyclePolicy {
+ public:
+  CncNode(const Scenario& scenario, const std::string& scenario_text, lcm_support::Bus& bus, int64_t run_id,
+          std::vector<std::string> participants, CncTimeouts timeouts)
+      : scenario_(scenario), machine_(scenario.machine), scenario_text_(scenario_text), bus_(bus),
+        inbox_(bus, run_id), participants_(std::move(participants)), timeouts_(timeouts),
+        lock_step_(machine_, std::count(participants_.begin(), participants_.end(), "logger") > 0,
+                   timeouts.answer.count(), timeouts.logger.count()) {
+    for (size_t i = 0; i < machine_.axes.size(); ++i)
+      inbox_.on<hil::axis_state_t>(channels::axis_state(machine_.axes[i].name),
+                                   [this, i](const hil::axis_state_t& m, const lcm::ReceiveBuffer&) {
+                                     return m.axis == machine_.axes[i].name &&
+                                            lock_step_.take_axis(i, m.cycle, m.errors);
+                                   });
+    inbox_.on<hil::hli_control_t>(channels::hli_control, [this](const hil::hli_control_t& m, const lcm::ReceiveBuffer&) {
+      return lock_step_.take_plc(m.cycle, lcm_support::from_message(m));
+    });
+    // Deep: a long first cycle (decoding a big program) queues heartbeats.
+    inbox_.on<hil::participant_t>(
+        channels::participant,
+        [this](const hil::participant_t& m, const lcm::ReceiveBuffer& rbuf) {
+          if (m.phase == hil::participant_t::PHASE_READY) ready_.insert(m.name);
+          if (m.name == "logger" && m.phase != hil::participant_t::PHASE_RUN_END) lock_step_.logger_alive(rbuf.recv_utime, m.cycle);
+          return true;
+        },
+        100000);
+  }
+
+  int run() {
+    if (!wait_for_participants()) return 3;
+    publish_manifest();
+    cnc::Channel channel(scenario_.machine, scenario_.nc_program);
+    const cnc::CycleLoopResult result = cnc::run_cycles(channel, scenario_, *this);
+    const int64_t k = result.last_cycle;
+    publish_run_end(k);
+    spdlog::info("run ended after cycle {} ({:.3f} s simulated), channel {}", k, k * machine_.cycle_time_s(),
+                 to_string(channel.hli().channel_state));
+    if (!inbox_.ledger().empty()) spdlog::warn("refused: {}", inbox_.ledger().describe());
+    return lock_step_.lost().empty() && result.outcome != cnc::RunOutcome::answers_missing ? 0 : 3;
+  }
+
+  bool publish(int64_t k, const cnc::Channel& channel, const std::vector<Event>& events) override {
+    for (const Event& e : events) log_event(e);
+    lock_step_.begin(k);  // before the output: an answer can only follow it
+    for (const auto& m : cnc_node::cycle_messages(channel, machine_, events, k, inbox_.run_id()))
+      bus_.publish(m.channel, m.bytes.data(), static_cast<uint32_t>(m.bytes.size()));
+    return true;
+  }
+
+  bool publish_event(int64_t k, const Event& e) override {
+    log_event(e);
+    const auto m = cnc_node::event_message(e, machine_, k, inbox_.run_id());
+    bus_.publish(m.channel, m.bytes.data(), static_cast<uint32_t>(m.bytes.size()));
+    return true;
+  }
+
+  std::optional<cnc::CycleAnswers> answers(int64_t) override {
+    wait_for_answers();
+    wait_for_logger();
+    cnc_node::LockStep::Taken taken = lock_step_.take();
+    return cnc::CycleAnswers{taken.control, cnc_node::drive_errors(machine_, taken.axis_errors),
+                             std::move(taken.lost)};
+  }
+
+ private:
+  bool wait_for_participants() {
+    const auto give_up = clock_type::now() + std::chrono::seconds(20);
+    auto missing = [&] {
+      std::string names;
+      for (const auto& name : participants_)
+        if (!ready_.count(name)) names += " '" + name + "'";
+      return names;
+    };
+    while (!missing().empty()) {
+      if (clock_type::now() > give_up) {
+        spdlog::error("participants not ready after 20 s:{}", missing());
+        return false;
+      }
+      bus_.handle_timeout(50);
+    }
+    lock_step_.logger_alive(wall_us(), -1);
+    return true;
+  }
+
+  void publish_manifest() {
+    hil::run_manifest_t m;
+    m.run_id = inbox_.run_id();
+    m.utime = 0;
+    m.cycle = 0;
+    m.rig_version = HIL_VERSION;
+    m.scenario_name = scenario_.name;
+    m.cycle_us = machine_.cycle_time_us;
+    m.answer_timeout_ms = static_cast<int32_t>(timeouts_.answer.count());
+    m.scenario_bytes = static_cast<int64_t>(scenario_text_.size() + scenario_.nc_program.size());
+    m.scenario_digest = scenario_digest(scenario_text_, scenario_.nc_program);
+    m.participants = participants_;
+    m.n_participants = static_cast<int16_t>(m.participants.size());
+    bus_.publish(channels::manifest, m);
+  }
+
+  void publish_run_end(int64_t k) {
+    hil::participant_t end;
+    end.run_id = inbox_.run_id();
+    end.utime = k * machine_.cycle_time_us;
+    end.cycle = k;
+    end.name = "cnc";
+    end.phase = hil::participant_t::PHASE_RUN_END;
+    end.verdicts = 0;
+    end.rejected = lcm_support::to_message(inbox_.ledger());
+    end.n_rejected = static_cast<int16_t>(end.rejected.size());
+    for (const auto& [name, cycle] : lock_step_.lost()) {
+      end.lost.push_back(name);
+      end.lost_cycle.push_back(cycle);
+    }
+    end.n_lost = static_cast<int16_t>(end.lost.size());
+    bus_.publish(channels::participant, end);
+  }
+
+  static void log_event(const Event& e) {
+    spdlog::log(e.severity == Severity::error ? spdlog::level::err : spdlog::level::warn, "{}", describe(e));
+  }
+
+  // Until every participant not lost has answered; the watchdog loses the
+  // silent ones.
+  void wait_for_answers() {
+    const auto give_up = clock_type::now() + timeouts_.answer;
+    while (!lock_step_.complete()) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - clock_type::now());
+      if (left.count() <= 0) return lock_step_.lose_silent();
+      if (bus_.handle_timeout(static_cast<int>(left.count()) + 1) < 0) throw std::runtime_error("LCM receive failed");
+    }
+  }
+
+  // Until the logger is within LockStep::logger_window cycles, or lost.
+  void wait_for_logger() {
+    lock_step_.check_logger(wall_us());
+    while (lock_step_.logger_behind()) {
+      if (bus_.handle_timeout(10) < 0) throw std::runtime_error("LCM receive failed");
+      lock_step_.check_logger(wall_us());
+    }
+  }
+
+  Scenario scenario_;
+  MachineConfig machine_;
+  std::string scenario_text_;
+  lcm_support::Bus& bus_;
+  lcm_support::Inbox inbox_;
+  std::vector<std::string> participants_;
+  CncTimeouts timeouts_;
+  cnc_node::LockStep lock_step_;
+  std::set<std::string> ready_;
+};
+
+}  // namespace
+
+int run_cnc(const Scenario& scenario, const std::string& scenario_text, lcm_support::Bus& bus, int64_t run_id,
+            std::vector<std::string> participants, CncTimeouts timeouts) {
+  CncNode node(scenario, scenario_text, bus, run_id, std::move(participants), timeouts);
+  return node.run();
+}
+
+}  // namespace hil::cnc_node

@@ -1,0 +1,45 @@
+#pragma once
+// What a node sends and receives through (RIG-1): raw bytes on named
+// channels, encoded as LCM types. Two kinds: LCM itself (udpm between
+// processes, lcm_bus) and the in-process bus (in_process_bus.hpp: every node
+// in one process, the same messages handed on by direct calls). The nodes
+// know only this interface, so both runs produce the same messages.
+#include <lcm/lcm-cpp.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hil::lcm_support {
+
+class Bus {
+ public:
+  // The message and the channel it came on; rbuf.recv_utime is the wall
+  // clock when it was received.
+  using Handler = std::function<void(const lcm::ReceiveBuffer& rbuf, const std::string& channel)>;
+
+  virtual ~Bus() = default;
+  virtual void publish(const std::string& channel, const void* data, uint32_t size) = 0;
+  // `channel` is a channel name, or channels::every_channel_but_self_test.
+  // Returns an id for unsubscribe.
+  virtual int subscribe(const std::string& channel, Handler handler, int queue_capacity) = 0;
+  virtual void unsubscribe(int id) = 0;
+  // Hands on what has arrived, waiting at most `timeout_ms` for it: > 0 if
+  // a message was handled, 0 if none came, < 0 if receiving failed.
+  virtual int handle_timeout(int timeout_ms) = 0;
+
+  template <typename Message>
+  void publish(const std::string& channel, const Message& message) {
+    std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
+    message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    publish(channel, bytes.data(), static_cast<uint32_t>(bytes.size()));
+  }
+};
+
+// LCM on `url` (udpm://, file://, memq://); throws naming the URL if LCM
+// cannot open it.
+std::unique_ptr<Bus> lcm_bus(const std::string& url);
+
+}  // namespace hil::lcm_support

@@ -1,0 +1,50 @@
+#include "plc_sim_node.hpp"
+
+#include <hil/event_t.hpp>
+#include <hil/hli_control_t.hpp>
+#include <spdlog/spdlog.h>
+
+#include "channels.hpp"
+#include "messages.hpp"
+
+namespace hil::plc {
+
+PlcSimNode::PlcSimNode(const Scenario& scenario, lcm_support::Inbox& inbox)
+    : engine_(scenario), bus_(inbox.bus()), run_id_(inbox.run_id()) {
+  inbox.on<hil::hli_state_t>(channels::hli_state, [this](const hil::hli_state_t& m, const lcm::ReceiveBuffer&) {
+    if (m.cycle != last_cycle_ + 1) return false;  // each cycle once, in order
+    on_state(m);
+    return true;
+  });
+  inbox.on<hil::event_t>(channels::event, [this](const hil::event_t& m, const lcm::ReceiveBuffer&) {
+    if (m.source != source) engine_.observe(lcm_support::from_message(m));
+    return true;
+  });
+}
+
+int PlcSimNode::report(int64_t cycle) {
+  int published = 0;
+  for (const ExpectationResult& r : engine_.finish()) {
+    Event e;
+    e.severity = r.passed ? Severity::info : Severity::error;
+    e.verdict = r.passed ? Verdict::pass : Verdict::fail;  // what the rig counts
+    e.message = std::string(r.passed ? "PASS " : "FAIL ") + r.what + ":" + r.detail;
+    (r.passed ? spdlog::info("{}", e.message) : spdlog::error("{}", e.message));
+    hil::event_t m = lcm_support::to_message(e, cycle, utime_, source);
+    m.run_id = run_id_;
+    bus_.publish(channels::event, m);
+    ++published;
+  }
+  return published;
+}
+
+void PlcSimNode::on_state(const hil::hli_state_t& m) {
+  last_cycle_ = m.cycle;
+  utime_ = m.utime;
+  const HliControl& control = engine_.cycle(lcm_support::from_message(m));
+  hil::hli_control_t out = lcm_support::to_message(control, m.utime);
+  out.run_id = run_id_;
+  bus_.publish(channels::hli_control, out);
+}
+
+}  // namespace hil::plc
