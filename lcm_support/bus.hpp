@@ -6,6 +6,7 @@
 // know only this interface, so both runs produce the same messages.
 #include <lcm/lcm-cpp.hpp>
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -37,6 +38,12 @@ class Bus {
     publish(channel, bytes.data(), static_cast<uint32_t>(bytes.size()));
   }
 };
+
+// What a Bus stamps a received message with (LCM's recv_utime).
+inline int64_t wall_clock_us() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
 
 // LCM on `url` (udpm://, file://, memq://); throws naming the URL if LCM
 // cannot open it.

@@ -6,10 +6,10 @@
 // queued behind it, as on LCM.
 #include <deque>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "bus.hpp"
+#include "subscribers.hpp"
 
 namespace hil::lcm_support {
 
@@ -27,25 +27,13 @@ class InProcessBus : public Bus {
   void drain();
 
  private:
-  struct Subscription {
-    int id;
-    std::string channel;
-    Handler handler;
-  };
   struct Queued {
     std::string channel;
     std::vector<uint8_t> bytes;
   };
-  const std::vector<const Subscription*>& subscribers(const std::string& channel);
-
-  std::vector<std::unique_ptr<Subscription>> subscriptions_;
-  std::unordered_map<std::string, std::vector<const Subscription*>> by_channel_;  // made as channels appear
+  Subscribers subscribers_;
   std::deque<Queued> queue_;
   std::vector<std::vector<uint8_t>> spare_;  // buffers of handed-on messages, for the next ones
-  int next_id_ = 1;
-  // A subscription made or ended by a handler ends the hand-over of the
-  // message at hand (the lists it walks are made anew).
-  int64_t generation_ = 0;
 };
 
 }  // namespace hil::lcm_support

@@ -7,6 +7,7 @@
 
 #include "logger_node.hpp"
 #include "node_options.hpp"
+#include "udpm_bus.hpp"
 #include "participant.hpp"
 #include "run_identity.hpp"
 #include "scenario.hpp"
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
   app.add_option("--linger-s", linger_s, "after the CNC's RUN_END, wait at most this long for the others");
   CLI11_PARSE(app, argc, argv);
   return hil::lcm_support::guarded_main("logger", [&] {
-    const auto bus = hil::lcm_support::lcm_bus(url);
+    const auto bus = hil::lcm_support::node_bus(url, {std::chrono::milliseconds(1)});
     std::optional<std::pair<std::string, std::string>> scenario;
     if (!scenario_file.empty())
       scenario.emplace(hil::read_text(scenario_file), hil::load_scenario_file(scenario_file).nc_program);

@@ -1,0 +1,256 @@
+#include "udpm_bus.hpp"
+
+#include <arpa/inet.h>
+#include <linux/filter.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <deque>
+#include <map>
+#include <stdexcept>
+#include <thread>
+#include <tuple>
+
+#include "channels.hpp"
+#include "subscribers.hpp"
+
+namespace hil::lcm_support {
+namespace {
+
+constexpr uint32_t lcm_short = 0x4c433032;  // "LC02": one datagram
+constexpr uint32_t lcm_long = 0x4c433033;   // "LC03": a fragment
+constexpr size_t short_header = 8, long_header = 20, max_channel = 63;
+constexpr uint32_t udp_header = 8;  // a UDP socket's filter sees the UDP header first
+
+uint32_t be32(const uint8_t* p) { return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3]; }
+uint16_t be16(const uint8_t* p) { return static_cast<uint16_t>(p[0] << 8 | p[1]); }
+
+struct Group {
+  in_addr address{};
+  int port = 0;
+  int recv_buf_size = 0;
+};
+
+Group parse_url(const std::string& url) {
+  const std::string scheme = "udpm://";
+  if (url.rfind(scheme, 0) != 0) throw std::runtime_error("not a udpm URL: " + url);
+  const std::string rest = url.substr(scheme.size());
+  const size_t query = rest.find('?');
+  const std::string host_port = rest.substr(0, query);
+  const size_t colon = host_port.find(':');
+  Group g;
+  if (colon == std::string::npos || inet_pton(AF_INET, host_port.substr(0, colon).c_str(), &g.address) != 1)
+    throw std::runtime_error("no multicast group:port in " + url);
+  try {
+    g.port = std::stoi(host_port.substr(colon + 1));
+  } catch (const std::exception&) {
+    throw std::runtime_error("no port in " + url);
+  }
+  if (query != std::string::npos) {
+    const std::string options = rest.substr(query + 1);
+    const std::string key = "recv_buf_size=";
+    const size_t at = options.find(key);
+    if (at != std::string::npos) g.recv_buf_size = std::atoi(options.c_str() + at + key.size());
+  }
+  return g;
+}
+
+class UdpmBus : public Bus {
+ public:
+  UdpmBus(const std::string& url, UdpmReceive receive) : sender_(url), receive_(receive) {
+    if (!sender_.good()) throw std::runtime_error("cannot open LCM on " + url);
+    const Group group = parse_url(url);
+    fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    if (fd_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
+    const int one = 1;
+    setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);  // as LCM's own receivers on the port
+    if (group.recv_buf_size > 0 &&
+        setsockopt(fd_, SOL_SOCKET, SO_RCVBUFFORCE, &group.recv_buf_size, sizeof group.recv_buf_size) != 0)
+      setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &group.recv_buf_size, sizeof group.recv_buf_size);
+    sockaddr_in any{};
+    any.sin_family = AF_INET;
+    any.sin_addr.s_addr = htonl(INADDR_ANY);
+    any.sin_port = htons(static_cast<uint16_t>(group.port));
+    ip_mreq membership{};
+    membership.imr_multiaddr = group.address;
+    membership.imr_interface.s_addr = htonl(INADDR_ANY);
+    if (bind(fd_, reinterpret_cast<sockaddr*>(&any), sizeof any) != 0 ||
+        setsockopt(fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &membership, sizeof membership) != 0) {
+      const std::string what = std::strerror(errno);
+      close(fd_);
+      throw std::runtime_error("cannot receive on " + url + ": " + what +
+                               " (no multicast route? see README: scripts/in_netns.sh)");
+    }
+    refilter();  // nothing subscribed yet: nothing let in
+  }
+  ~UdpmBus() override { close(fd_); }
+
+  void publish(const std::string& channel, const void* data, uint32_t size) override {
+    if (sender_.publish(channel, data, size) != 0) throw std::runtime_error("LCM publish on " + channel + " failed");
+  }
+
+  int subscribe(const std::string& channel, Handler handler, int) override {
+    const int id = subscribers_.add(channel, std::move(handler));
+    refilter();
+    return id;
+  }
+
+  void unsubscribe(int id) override {
+    subscribers_.remove(id);
+    refilter();
+  }
+
+  int handle_timeout(int timeout_ms) override {
+    if (pending_.empty()) {
+      if (receive_.batch.count() > 0)
+        std::this_thread::sleep_for(std::min<std::chrono::microseconds>(receive_.batch, std::chrono::milliseconds(timeout_ms)));
+      pollfd p{fd_, POLLIN, 0};
+      const int ready = poll(&p, 1, receive_.batch.count() > 0 ? 0 : timeout_ms);
+      if (ready < 0) return errno == EINTR ? 0 : -1;
+      if (ready > 0 && read_available() < 0) return -1;
+    }
+    if (pending_.empty()) return 0;
+    Message m = std::move(pending_.front());
+    pending_.pop_front();
+    const lcm::ReceiveBuffer rbuf{m.bytes.data(), m.malformed ? static_cast<uint32_t>(-1) : static_cast<uint32_t>(m.bytes.size()),
+                                  m.recv_utime};
+    subscribers_.dispatch(rbuf, m.channel);
+    return 1;
+  }
+
+ private:
+  struct Message {
+    std::string channel;
+    std::vector<uint8_t> bytes;
+    int64_t recv_utime;
+    bool malformed = false;  // no channel name: only for subscribers of every channel
+  };
+  struct Fragments {
+    std::string channel;
+    std::vector<uint8_t> bytes;
+    uint16_t remaining = 0;
+  };
+
+  void refilter() {
+    bool every = false;
+    const std::vector<std::string> names = subscribers_.names(every);
+    std::vector<FilterInstruction> program = every ? std::vector<FilterInstruction>{} : channel_filter(names);
+    if (program.empty()) program.push_back({BPF_RET | BPF_K, 0, 0, 0xFFFFFFFF});  // every datagram
+    std::vector<sock_filter> code;
+    for (const FilterInstruction& i : program) code.push_back({i.code, i.jt, i.jf, i.k});
+    sock_fprog fprog{static_cast<unsigned short>(code.size()), code.data()};
+    if (setsockopt(fd_, SOL_SOCKET, SO_ATTACH_FILTER, &fprog, sizeof fprog) != 0)
+      throw std::runtime_error(std::string("SO_ATTACH_FILTER: ") + std::strerror(errno));
+  }
+
+  // Every datagram waiting at the socket, many per system call.
+  int read_available() {
+    constexpr unsigned batch = 32;
+    if (buffers_.empty()) buffers_.assign(batch, std::vector<uint8_t>(65536));
+    for (;;) {
+      mmsghdr headers[batch]{};
+      iovec io[batch];
+      sockaddr_in from[batch];
+      for (unsigned i = 0; i < batch; ++i) {
+        io[i] = {buffers_[i].data(), buffers_[i].size()};
+        headers[i].msg_hdr.msg_iov = &io[i];
+        headers[i].msg_hdr.msg_iovlen = 1;
+        headers[i].msg_hdr.msg_name = &from[i];
+        headers[i].msg_hdr.msg_namelen = sizeof from[i];
+      }
+      const int n = recvmmsg(fd_, headers, batch, MSG_DONTWAIT, nullptr);
+      if (n < 0) return errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR ? 0 : -1;
+      const int64_t now = wall_clock_us();
+      for (int i = 0; i < n; ++i) take(buffers_[i].data(), headers[i].msg_len, from[i], now);
+      if (n < static_cast<int>(batch)) return 0;
+    }
+  }
+
+  // LCM's datagram formats (lcm/udpm_util.h of LCM 1.3.1).
+  void take(const uint8_t* d, size_t size, const sockaddr_in& from, int64_t now) {
+    if (size < short_header) return;
+    const uint32_t magic = be32(d);
+    if (magic == lcm_short) {
+      const auto* name = d + short_header;
+      const auto* nul = static_cast<const uint8_t*>(std::memchr(name, 0, std::min(size - short_header, max_channel + 1)));
+      if (!nul) return pending_.push_back({"", {}, now, true});
+      pending_.push_back({std::string(reinterpret_cast<const char*>(name), nul - name),
+                          std::vector<uint8_t>(nul + 1, d + size), now});
+      return;
+    }
+    if (magic != lcm_long || size < long_header) return;
+    const uint32_t seqno = be32(d + 4), total = be32(d + 8), offset = be32(d + 12);
+    const uint16_t number = be16(d + 16), count = be16(d + 18);
+    if (total > LCM_MAX_MESSAGE_SIZE || count == 0 || number >= count) return;
+    const auto key = std::make_tuple(from.sin_addr.s_addr, from.sin_port, seqno);
+    const uint8_t* data = d + long_header;
+    size_t length = size - long_header;
+    if (number == 0) {
+      const auto* nul = static_cast<const uint8_t*>(std::memchr(data, 0, std::min(length, max_channel + 1)));
+      if (!nul) return;
+      if (fragments_.size() >= 16) fragments_.erase(fragments_.begin());  // bounded: the oldest is lost
+      Fragments& f = fragments_[key];
+      f = {std::string(reinterpret_cast<const char*>(data), nul - data), std::vector<uint8_t>(total), count};
+      length -= static_cast<size_t>(nul + 1 - data);
+      data = nul + 1;
+    }
+    const auto it = fragments_.find(key);
+    if (it == fragments_.end() || offset > total || length > total - offset) return;
+    std::memcpy(it->second.bytes.data() + offset, data, length);
+    if (--it->second.remaining > 0) return;
+    pending_.push_back({std::move(it->second.channel), std::move(it->second.bytes), now});
+    fragments_.erase(it);
+  }
+
+  lcm::LCM sender_;
+  UdpmReceive receive_;
+  int fd_ = -1;
+  Subscribers subscribers_;
+  std::deque<Message> pending_;
+  std::map<std::tuple<in_addr_t, in_port_t, uint32_t>, Fragments> fragments_;
+  std::vector<std::vector<uint8_t>> buffers_;
+};
+
+}  // namespace
+
+std::vector<FilterInstruction> channel_filter(const std::vector<std::string>& channels) {
+  constexpr uint16_t load_word = BPF_LD | BPF_W | BPF_ABS, load_half = BPF_LD | BPF_H | BPF_ABS,
+                     load_byte = BPF_LD | BPF_B | BPF_ABS, equal = BPF_JMP | BPF_JEQ | BPF_K, ret = BPF_RET | BPF_K;
+  constexpr uint32_t accept = 0xFFFFFFFF, drop = 0;
+  std::vector<FilterInstruction> p{{load_word, 0, 0, udp_header}, {equal, 1, 0, lcm_short}, {ret, 0, 0, drop}};
+  for (const std::string& channel : channels) {
+    if (channel.size() > max_channel) return {};
+    const std::string name = channel + '\0';  // the name ends with its NUL
+    std::vector<FilterInstruction> block;
+    for (size_t at = 0; at < name.size();) {
+      const size_t left = name.size() - at;
+      const size_t width = left >= 4 ? 4 : left >= 2 ? 2 : 1;
+      uint32_t value = 0;
+      for (size_t i = 0; i < width; ++i) value = value << 8 | static_cast<uint8_t>(name[at + i]);
+      const auto offset = static_cast<uint32_t>(udp_header + short_header + at);
+      block.push_back({width == 4 ? load_word : width == 2 ? load_half : load_byte, 0, 0, offset});
+      block.push_back({equal, 0, 0, value});
+      at += width;
+    }
+    block.push_back({ret, 0, 0, accept});
+    for (size_t i = 1; i < block.size(); i += 2)  // a mismatch goes on with the next channel
+      block[i].jf = static_cast<uint8_t>(block.size() - i - 1);
+    p.insert(p.end(), block.begin(), block.end());
+  }
+  p.push_back({ret, 0, 0, drop});
+  return p;
+}
+
+std::unique_ptr<Bus> udpm_bus(const std::string& url, UdpmReceive receive) {
+  return std::make_unique<UdpmBus>(url, receive);
+}
+
+std::unique_ptr<Bus> node_bus(const std::string& url, UdpmReceive receive) {
+  return url.rfind("udpm://", 0) == 0 ? udpm_bus(url, receive) : lcm_bus(url);
+}
+
+}  // namespace hil::lcm_support
