@@ -85,7 +85,6 @@ class UdpmBus : public Bus {
       throw std::runtime_error("cannot receive on " + url + ": " + what +
                                " (no multicast route? see README: scripts/in_netns.sh)");
     }
-    refilter();  // nothing subscribed yet: nothing let in
   }
   ~UdpmBus() override { close(fd_); }
 
@@ -138,8 +137,15 @@ class UdpmBus : public Bus {
   void refilter() {
     bool every = false;
     const std::vector<std::string> names = subscribers_.names(every);
-    std::vector<FilterInstruction> program = every ? std::vector<FilterInstruction>{} : channel_filter(names);
-    if (program.empty()) program.push_back({BPF_RET | BPF_K, 0, 0, 0xFFFFFFFF});  // every datagram
+    // A subscriber of every channel gets every datagram, and none is dropped
+    // by a filter: the logger counts the kernel's drops at its socket, and a
+    // filter's count there too.
+    const std::vector<FilterInstruction> program = every ? std::vector<FilterInstruction>{} : channel_filter(names);
+    if (program.empty()) {
+      const int unused = 0;
+      setsockopt(fd_, SOL_SOCKET, SO_DETACH_FILTER, &unused, sizeof unused);
+      return;
+    }
     std::vector<sock_filter> code;
     for (const FilterInstruction& i : program) code.push_back({i.code, i.jt, i.jf, i.k});
     sock_fprog fprog{static_cast<unsigned short>(code.size()), code.data()};
