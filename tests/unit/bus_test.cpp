@@ -1,8 +1,13 @@
 // The in-process bus and what the logger writes with it (issue 17, RIG-1,
 // RIG-4): messages handed on in the order they were published, to every
 // subscriber of the channel; the event log readable by LCM's reader.
+#include <arpa/inet.h>
 #include <hil/axis_state_t.hpp>
 #include <lcm/lcm-cpp.hpp>
+#include <linux/filter.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <cstdio>
@@ -14,6 +19,7 @@
 #include "event_log_writer.hpp"
 #include "in_process_bus.hpp"
 #include "inbox.hpp"
+#include "udpm_bus.hpp"
 #include "wire.hpp"
 
 using namespace hil;
@@ -98,4 +104,54 @@ TEST_CASE("issue 17 RIG-4 event log writer: LCM's reader reads every event back,
   CHECK(log.readNextEvent() == nullptr);
   std::remove(path.c_str());
   CHECK_THROWS(logger::EventLogWriter("/nonexistent/dir/x.lcmlog"));
+}
+
+namespace {
+
+// An LCM short datagram (LCM 1.3.1 udpm_util.h): magic "LC02", sequence
+// number, channel, NUL, payload.
+std::string lcm_datagram(const std::string& channel, const std::string& payload) {
+  return std::string("LC02") + std::string(4, '\0') + channel + '\0' + payload;
+}
+
+}  // namespace
+
+TEST_CASE("issue 17 udpm bus: the kernel filter lets in LCM datagrams of the subscribed channels only", "[bus]") {
+  const std::vector<lcm_support::FilterInstruction> program =
+      lcm_support::channel_filter({"AXIS_X_CMD", "HIL_PARTICIPANT", "A"});
+  std::vector<sock_filter> code;
+  for (const auto& i : program) code.push_back({i.code, i.jt, i.jf, i.k});
+  const sock_fprog fprog{static_cast<unsigned short>(code.size()), code.data()};
+
+  const int receiver = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK, 0), sender = socket(AF_INET, SOCK_DGRAM, 0);
+  REQUIRE(receiver >= 0);
+  REQUIRE(sender >= 0);
+  sockaddr_in at{};
+  at.sin_family = AF_INET;
+  at.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  REQUIRE(bind(receiver, reinterpret_cast<sockaddr*>(&at), sizeof at) == 0);
+  socklen_t length = sizeof at;
+  REQUIRE(getsockname(receiver, reinterpret_cast<sockaddr*>(&at), &length) == 0);
+  REQUIRE(setsockopt(receiver, SOL_SOCKET, SO_ATTACH_FILTER, &fprog, sizeof fprog) == 0);
+
+  const std::vector<std::string> sent{
+      lcm_datagram("AXIS_X_CMD", "setpoint"),   // in
+      lcm_datagram("AXIS_Y_CMD", "setpoint"),   // another axis: out
+      lcm_datagram("AXIS_X_CMDS", "x"),         // a longer name: out
+      lcm_datagram("AXIS_X_CM", "x"),           // a shorter one: out
+      lcm_datagram("HIL_PARTICIPANT", "ready"),  // in
+      lcm_datagram("A", "one byte name"),       // in
+      std::string("LC03") + std::string(16, '\0') + "AXIS_X_CMD",  // a fragment: out
+      "AXIS_X_CMD",                             // no LCM datagram: out
+  };
+  for (const std::string& d : sent)
+    REQUIRE(sendto(sender, d.data(), d.size(), 0, reinterpret_cast<sockaddr*>(&at), sizeof at) ==
+            static_cast<ssize_t>(d.size()));
+  std::vector<std::string> received;
+  char buffer[256];
+  for (ssize_t n; (n = recv(receiver, buffer, sizeof buffer, 0)) > 0;) received.emplace_back(buffer, n);
+  CHECK(received == std::vector<std::string>{sent[0], sent[4], sent[5]});
+  close(receiver);
+  close(sender);
+  CHECK(lcm_support::channel_filter({std::string(64, 'x')}).empty());  // longer than LCM allows
 }
