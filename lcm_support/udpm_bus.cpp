@@ -4,6 +4,7 @@
 #include <linux/filter.h>
 #include <netinet/in.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -63,6 +64,7 @@ class UdpmBus : public Bus {
  public:
   UdpmBus(const std::string& url, UdpmReceive receive) : sender_(url), receive_(receive) {
     if (!sender_.good()) throw std::runtime_error("cannot open LCM on " + url);
+    if (receive_.batch.count() > 0) prctl(PR_SET_TIMERSLACK, 1000UL);  // 1 us: the pause as asked, not 50 us later
     const Group group = parse_url(url);
     fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
     if (fd_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
