@@ -27,13 +27,20 @@ inline const std::string every_channel_but_self_test = "(?!LCM_SELF_TEST$).*";
 inline std::string axis_command(const std::string& axis) { return "AXIS_" + axis + "_CMD"; }
 inline std::string axis_state(const std::string& axis) { return "AXIS_" + axis + "_STATE"; }
 
+// Whether a channel is named "AXIS_<axis><suffix>" (no allocation: the
+// logger asks for every message).
+inline bool names_an_axis(const std::string& channel, const char* suffix) {
+  constexpr size_t prefix = 5;  // "AXIS_"
+  const size_t suffix_size = std::char_traits<char>::length(suffix);
+  return channel.size() > prefix + suffix_size && channel.compare(0, prefix, "AXIS_") == 0 &&
+         channel.compare(channel.size() - suffix_size, suffix_size, suffix) == 0;
+}
+
 // The axis of a channel named "AXIS_<axis><suffix>"; "" for any other.
-inline std::string axis_of(const std::string& channel, const std::string& suffix) {
-  const std::string prefix = "AXIS_";
-  if (channel.size() <= prefix.size() + suffix.size() || channel.rfind(prefix, 0) != 0 ||
-      channel.compare(channel.size() - suffix.size(), suffix.size(), suffix) != 0)
-    return "";
-  return channel.substr(prefix.size(), channel.size() - prefix.size() - suffix.size());
+inline std::string axis_of(const std::string& channel, const char* suffix) {
+  if (!names_an_axis(channel, suffix)) return "";
+  const size_t suffix_size = std::char_traits<char>::length(suffix);
+  return channel.substr(5, channel.size() - 5 - suffix_size);
 }
 inline std::string axis_of_command(const std::string& channel) { return axis_of(channel, "_CMD"); }
 inline std::string axis_of_state(const std::string& channel) { return axis_of(channel, "_STATE"); }

@@ -51,8 +51,8 @@ std::optional<Identity> as_channel_type(const std::string& channel, Read read) {
   if (channel == channels::manifest) return read(Type<hil::run_manifest_t>{});
   if (channel == channels::scenario) return read(Type<hil::scenario_text_t>{});
   if (channel == channels::log_end) return read(Type<hil::log_summary_t>{});
-  if (!channels::axis_of_command(channel).empty()) return read(Type<hil::axis_setpoint_t>{});
-  if (!channels::axis_of_state(channel).empty()) return read(Type<hil::axis_state_t>{});
+  if (channels::names_an_axis(channel, "_CMD")) return read(Type<hil::axis_setpoint_t>{});
+  if (channels::names_an_axis(channel, "_STATE")) return read(Type<hil::axis_state_t>{});
   return std::nullopt;
 }
 
