@@ -3,6 +3,8 @@
 // batches of 1000 calls between two clock reads, the distribution (p50, p99,
 // max) from each call timed with the CPU's time-stamp counter (x86; else the
 // steady clock), less the counter's own cost (the median of empty timings).
+// A batch that took more than twice the median batch was preempted (the
+// machine is shared): it is left out of the mean and counted.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -18,6 +20,7 @@ namespace hil::bench {
 struct CallTimes {
   double mean_ns = 0, p50_ns = 0, p99_ns = 0, max_ns = 0;
   double checksum = 0;  // of the calls' results, so that none is optimised away
+  int batches = 0, preempted_batches = 0;
 };
 
 class CallTimer {
@@ -30,14 +33,27 @@ class CallTimer {
   CallTimes time(int count, Call call) const {
     CallTimes r;
     for (int i = 0; i < count; ++i) r.checksum += call(i);
-    double batched_ns = 0;
+    std::vector<double> batch_ns;
     for (int begin = 0; begin < count; begin += 1000) {
       const int end = std::min(count, begin + 1000);
       const auto t0 = std::chrono::steady_clock::now();
       for (int i = begin; i < end; ++i) r.checksum += call(i);
-      batched_ns += std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+      batch_ns.push_back(std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
+                         (end - begin));
     }
-    r.mean_ns = batched_ns / count;
+    std::vector<double> sorted = batch_ns;
+    std::sort(sorted.begin(), sorted.end());
+    const double limit = 2 * sorted[sorted.size() / 2];
+    double sum = 0;
+    for (double b : batch_ns) {
+      if (b > limit) {
+        ++r.preempted_batches;
+        continue;
+      }
+      sum += b;
+      ++r.batches;
+    }
+    r.mean_ns = sum / r.batches;
     std::vector<double> ns(static_cast<size_t>(count));
     for (int i = 0; i < count; ++i) {
       const std::uint64_t t0 = ticks();

@@ -35,8 +35,10 @@ double peak_rss_mib() {
 }
 
 void print_times(const char* what, int cases, const bench::CallTimes& t) {
-  std::printf("  %-22s %8d cases: mean %5.0f ns, p50 %5.0f ns, p99 %5.0f ns, max %6.0f ns (checksum %.6g)\n", what,
-              cases, t.mean_ns, t.p50_ns, t.p99_ns, t.max_ns, t.checksum);
+  std::printf("  %-29s %7d cases: mean %5.0f ns, p50 %5.0f ns, p99 %5.0f ns, max %7.0f ns (%d of %d batches"
+              " preempted; checksum %.6g)\n",
+              what, cases, t.mean_ns, t.p50_ns, t.p99_ns, t.max_ns, t.preempted_batches,
+              t.batches + t.preempted_batches, t.checksum);
 }
 
 // TRAPEZ per case family, then every slope type from random states.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace hil::cnc {
 namespace {
@@ -67,28 +68,31 @@ Phase sin2_ramp(double a_from, double a_to, double peak_jerk) {
   return ph;
 }
 
-MotionProfile::MotionProfile(MotionState start, std::vector<Phase> phases)
-    : phases_(std::move(phases)), start_(start) {
+void PhaseList::push_back(const Phase& phase) {
+  if (size_ == capacity) throw std::length_error("PhaseList: more than 9 phases");
+  phases_[size_++] = phase;
+}
+
+MotionProfile::MotionProfile(MotionState start, const PhaseList& phases) : phases_(phases), start_(start) {
   MotionState state = start;
   double time = 0;
-  starts_.reserve(phases_.size());
-  times_.reserve(phases_.size());
-  for (const Phase& ph : phases_) {
-    starts_.push_back(state);
-    times_.push_back(time);
+  double v_scale = std::abs(start_.v);
+  for (std::size_t i = 0; i < phases_.size(); ++i) {
+    const Phase& ph = phases_[i];
+    starts_[i] = state;
+    times_[i] = time;
+    v_scale = std::max(v_scale, std::abs(state.v));
     state = advance(state, ph, ph.duration);
     time += ph.duration;
   }
   state.j = 0;
   end_ = state;
   duration_ = time;
-  double v_scale = std::abs(start_.v);
-  for (const MotionState& s : starts_) v_scale = std::max(v_scale, std::abs(s.v));
   moving_at_end_ = std::abs(end_.v) > 1e-9 * v_scale;
 }
 
 MotionState MotionProfile::at(double t) const {
-  if (!(t < duration_)) {
+  if (!(t < duration_) || phases_.empty()) {
     MotionState s = end_;
     if (t > duration_ && std::isfinite(t) && moving_at_end_) s.p += end_.v * (t - duration_);
     return s;
@@ -96,7 +100,8 @@ MotionState MotionProfile::at(double t) const {
   t = std::max(t, 0.0);
   // The last phase starting at or before t: it lasts past t, and jumps of
   // zero duration at t are already in its start state.
-  const size_t i = static_cast<size_t>(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin()) - 1;
+  const auto times_end = times_.begin() + static_cast<std::ptrdiff_t>(phases_.size());
+  const size_t i = static_cast<size_t>(std::upper_bound(times_.begin(), times_end, t) - times_.begin()) - 1;
   return advance(starts_[i], phases_[i], t - times_[i]);
 }
 

@@ -4,8 +4,8 @@
 // a linear ramp (constant jerk: TRAPEZ, or a STEP jump of zero duration) or
 // of a sin² ramp (SIN2). Evaluated in closed form at any time, so sampling
 // it at the cycle time is exact.
+#include <array>
 #include <cstddef>
-#include <vector>
 
 namespace hil::cnc {
 
@@ -37,10 +37,29 @@ Phase hold(double duration, double a);                       // constant acceler
 Phase linear_ramp(double a_from, double a_to, double jerk);  // jerk > 0, or infinite for a jump
 Phase sin2_ramp(double a_from, double a_to, double peak_jerk);
 
+// The phases of a profile, held in place: a plan allocates nothing (the
+// planners replan every cycle). The most any planner builds is 9: a
+// velocity change of up to 4 phases, a cruise, and another of up to 4.
+class PhaseList {
+ public:
+  static constexpr std::size_t capacity = 9;
+  // Throws std::length_error beyond capacity (no planner gets there).
+  void push_back(const Phase& phase);
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const Phase& operator[](std::size_t i) const { return phases_[i]; }
+  const Phase* begin() const { return phases_.data(); }
+  const Phase* end() const { return phases_.data() + size_; }
+
+ private:
+  std::array<Phase, capacity> phases_{};
+  std::size_t size_ = 0;
+};
+
 class MotionProfile {
  public:
   MotionProfile() = default;
-  MotionProfile(MotionState start, std::vector<Phase> phases);
+  MotionProfile(MotionState start, const PhaseList& phases);
 
   double duration() const { return duration_; }
   MotionState start() const { return start_; }
@@ -53,15 +72,15 @@ class MotionProfile {
   // plan ended it stood still for the rest of the cycle (KRN-3: 1.66e6
   // mm/s^3 when an override change came in that cycle).
   MotionState at(double t) const;
-  const std::vector<Phase>& phases() const { return phases_; }
+  const PhaseList& phases() const { return phases_; }
   // State at the start of phase i (i == phases().size(): the end).
-  MotionState phase_start(std::size_t i) const { return i < starts_.size() ? starts_[i] : end_; }
-  double phase_start_time(std::size_t i) const { return i < times_.size() ? times_[i] : duration_; }
+  MotionState phase_start(std::size_t i) const { return i < phases_.size() ? starts_[i] : end_; }
+  double phase_start_time(std::size_t i) const { return i < phases_.size() ? times_[i] : duration_; }
 
  private:
-  std::vector<Phase> phases_;
-  std::vector<MotionState> starts_;
-  std::vector<double> times_;
+  PhaseList phases_;
+  std::array<MotionState, PhaseList::capacity> starts_{};
+  std::array<double, PhaseList::capacity> times_{};
   MotionState start_, end_;
   double duration_ = 0;
   bool moving_at_end_ = false;  // not a stop (whose end velocity is 0 to round-off)

@@ -50,7 +50,7 @@ MotionState VelocityChange::end(const MotionState& s) const {
   return x;
 }
 
-void VelocityChange::append_to(std::vector<Phase>& out) const {
+void VelocityChange::append_to(PhaseList& out) const {
   for (int i = 0; i < count; ++i) out.push_back(phases[i]);
 }
 
@@ -93,7 +93,7 @@ VelocityChange velocity_change(double v, double a, double v_target, const Limits
 
 MotionProfile velocity_profile(const MotionState& start, double v_target, const Limits& lim, SlopeType slope) {
   const double vt = std::clamp(v_target, -lim.v, lim.v);
-  std::vector<Phase> phases;
+  PhaseList phases;
   velocity_change(start.v, start.a, vt, lim, slope).append_to(phases);
   MotionState s = start;
   s.j = 0;

@@ -18,7 +18,7 @@ struct VelocityChange {
   // State at the end, begun in `s`.
   MotionState end(const MotionState& s) const;
   // Appends the phases to `out`.
-  void append_to(std::vector<Phase>& out) const;
+  void append_to(PhaseList& out) const;
 };
 
 // From (v, a) to (v_target, 0), fastest under lim.a and lim.j for the slope
