@@ -114,7 +114,7 @@ class Planner {
     if (search_ == SwitchSearch::reference) {
       const double t_switch = find_switch_reference(miss, miss_driven);
       double left = t_switch;  // counted down: a sum of durations would drift past it
-      for (int i = 0; i < drive_.count && left > 0; ++i) {
+      for (int i = 0; i < drive_.count() && left > 0; ++i) {
         Phase ph = drive_.phases[i];
         if (ph.duration > left) {
           ph.duration = left;
@@ -193,10 +193,10 @@ class Planner {
                          (std::abs(start_.p) + std::abs(target_) + (lim_.v + std::abs(start_.v)) * drive_.duration() +
                           std::abs(start_.a) * drive_.duration() * drive_.duration());
     // The phase: the first whose end is beyond the target.
-    int phase = drive_.count - 1;
+    int phase = drive_.count() - 1;
     MotionState s = start_;
     double f_lo = f0, f_hi = f1;
-    for (int i = 0; i + 1 < drive_.count; ++i) {
+    for (int i = 0; i + 1 < drive_.count(); ++i) {
       const Phase& ph = drive_.phases[i];
       const MotionState e = advance(s, ph, ph.duration);
       if (ph.duration > 0) {
@@ -249,7 +249,7 @@ class Planner {
 
   MotionState driven_for(double t) const {
     MotionState s = start_;
-    for (int i = 0; i < drive_.count; ++i) {
+    for (int i = 0; i < drive_.count(); ++i) {
       const double d = drive_.phases[i].duration;
       if (t <= d) return advance(s, drive_.phases[i], t);
       s = advance(s, drive_.phases[i], d);

@@ -40,18 +40,18 @@ double start_ramp_gain(double a0, double a_p, double rate, double unwind_rate) {
 
 double VelocityChange::duration() const {
   double t = 0;
-  for (int i = 0; i < count; ++i) t += phases[i].duration;
+  for (const Phase& ph : phases) t += ph.duration;
   return t;
 }
 
 MotionState VelocityChange::end(const MotionState& s) const {
   MotionState x = s;
-  for (int i = 0; i < count; ++i) x = advance(x, phases[i], phases[i].duration);
+  for (const Phase& ph : phases) x = advance(x, ph, ph.duration);
   return x;
 }
 
 void VelocityChange::append_to(PhaseList& out) const {
-  for (int i = 0; i < count; ++i) out.push_back(phases[i]);
+  for (const Phase& ph : phases) out.push_back(ph);
 }
 
 VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope) {
@@ -64,7 +64,7 @@ VelocityChange velocity_change(double v, double a, double v_target, const Limits
   const double round_off = 16 * std::numeric_limits<double>::epsilon() *
                            (lim.v + std::abs(v) + std::abs(v_target) + std::abs(v_ramp_down - v));
   if (std::abs(v_target - v_ramp_down) <= round_off) {
-    change.phases[change.count++] = unwind(a, 0.0, lim, slope);
+    change.phases.push_back(unwind(a, 0.0, lim, slope));
     return change;
   }
   const double sign = v_ramp_down < v_target ? 1.0 : -1.0;
@@ -79,15 +79,15 @@ VelocityChange velocity_change(double v, double a, double v_target, const Limits
   const double t_hold = a_p > 0 ? std::max(0.0, dv / a_p) : 0.0;
 
   if (a0 < 0 && slope == SlopeType::sin2) {  // the wrong way: unwind, then a fresh pulse
-    change.phases[change.count++] = unwind(a, 0.0, lim, slope);
-    change.phases[change.count++] = ramp(0.0, sign * a_p, lim, slope);
+    change.phases.push_back(unwind(a, 0.0, lim, slope));
+    change.phases.push_back(ramp(0.0, sign * a_p, lim, slope));
   } else if (a_p < a0) {
-    change.phases[change.count++] = unwind(a, sign * a_p, lim, slope);
+    change.phases.push_back(unwind(a, sign * a_p, lim, slope));
   } else {
-    change.phases[change.count++] = ramp(a, sign * a_p, lim, slope);
+    change.phases.push_back(ramp(a, sign * a_p, lim, slope));
   }
-  change.phases[change.count++] = hold(t_hold, sign * a_p);
-  change.phases[change.count++] = ramp(sign * a_p, 0.0, lim, slope);
+  change.phases.push_back(hold(t_hold, sign * a_p));
+  change.phases.push_back(ramp(sign * a_p, 0.0, lim, slope));
   return change;
 }
 

@@ -3,8 +3,6 @@
 // (KRN-3): from any (v, a) to a target velocity with acceleration 0. The
 // velocity-target mode for feed hold, override and stop, and the building
 // block of the position planner.
-#include <array>
-
 #include "motion_profile.hpp"
 #include "slope.hpp"
 
@@ -12,8 +10,8 @@ namespace hil::cnc {
 
 // Ramp to a plateau (SIN2: via a = 0), hold it, ramp back to 0.
 struct VelocityChange {
-  std::array<Phase, 4> phases{};
-  int count = 0;
+  InlineList<Phase, 4> phases;
+  int count() const { return static_cast<int>(phases.size()); }
   double duration() const;
   // State at the end, begun in `s`.
   MotionState end(const MotionState& s) const;
