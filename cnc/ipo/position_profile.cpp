@@ -44,7 +44,7 @@ class Planner {
     // and it entered an arc of radius 0.058 mm at 7.3 mm/s).
     if (v_end_ > 0 && !lowered_) {
       auto fits = [&](double v) {
-        return velocity_change(start_.v, start_.a, v, lim_, slope_).end(start_).p <= target_;
+        return velocity_change_end(start_, v, lim_, slope_).p <= target_;
       };
       if (fits(0)) {
         Planner lower(start_, target_, last_fitting(0.0, v_end_, fits), lim_, slope_, search_);
@@ -170,7 +170,7 @@ class Planner {
  private:
   // Where the fastest change to v_end from `s` ends, relative to the target.
   double overshoot(const MotionState& s) const {
-    return velocity_change(s.v, s.a, v_end_, lim_, slope_).end(s).p - target_;
+    return velocity_change_end(s, v_end_, lim_, slope_).p - target_;
   }
 
   // The switch from the drive to the arrival: `tau` into drive phase `phase`.

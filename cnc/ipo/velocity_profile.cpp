@@ -54,18 +54,23 @@ void VelocityChange::append_to(PhaseList& out) const {
   for (const Phase& ph : phases) out.push_back(ph);
 }
 
-VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope) {
+namespace {
+
+// The phases of the change, one by one into `emit`: kept apart from where
+// they go, so that the end state of a change (what the position planner's
+// search evaluates) is computed by the same arithmetic without storing them.
+template <typename Emit>
+void plan_change(double v, double a, double v_target, const Limits& lim, SlopeType slope, Emit&& emit) {
   const double rate = ramp_rate(lim, slope), unwinding = unwind_rate(lim, slope);
   // Solve the rising case; a falling change is its mirror image.
   const double v_ramp_down = velocity_after_ramp_to_zero(v, a, lim, slope);
-  VelocityChange change;
   // Ramping straight to a = 0 lands on v_target to round-off: any plateau
   // found beyond that would be the square root of noise.
   const double round_off = 16 * std::numeric_limits<double>::epsilon() *
                            (lim.v + std::abs(v) + std::abs(v_target) + std::abs(v_ramp_down - v));
   if (std::abs(v_target - v_ramp_down) <= round_off) {
-    change.phases.push_back(unwind(a, 0.0, lim, slope));
-    return change;
+    emit(unwind(a, 0.0, lim, slope));
+    return;
   }
   const double sign = v_ramp_down < v_target ? 1.0 : -1.0;
   const double v0 = sign * v, a0 = sign * a, vt = sign * v_target;
@@ -79,16 +84,29 @@ VelocityChange velocity_change(double v, double a, double v_target, const Limits
   const double t_hold = a_p > 0 ? std::max(0.0, dv / a_p) : 0.0;
 
   if (a0 < 0 && slope == SlopeType::sin2) {  // the wrong way: unwind, then a fresh pulse
-    change.phases.push_back(unwind(a, 0.0, lim, slope));
-    change.phases.push_back(ramp(0.0, sign * a_p, lim, slope));
+    emit(unwind(a, 0.0, lim, slope));
+    emit(ramp(0.0, sign * a_p, lim, slope));
   } else if (a_p < a0) {
-    change.phases.push_back(unwind(a, sign * a_p, lim, slope));
+    emit(unwind(a, sign * a_p, lim, slope));
   } else {
-    change.phases.push_back(ramp(a, sign * a_p, lim, slope));
+    emit(ramp(a, sign * a_p, lim, slope));
   }
-  change.phases.push_back(hold(t_hold, sign * a_p));
-  change.phases.push_back(ramp(sign * a_p, 0.0, lim, slope));
+  emit(hold(t_hold, sign * a_p));
+  emit(ramp(sign * a_p, 0.0, lim, slope));
+}
+
+}  // namespace
+
+VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope) {
+  VelocityChange change;
+  plan_change(v, a, v_target, lim, slope, [&](const Phase& ph) { change.phases.push_back(ph); });
   return change;
+}
+
+MotionState velocity_change_end(const MotionState& s, double v_target, const Limits& lim, SlopeType slope) {
+  MotionState x = s;
+  plan_change(s.v, s.a, v_target, lim, slope, [&](const Phase& ph) { x = advance(x, ph, ph.duration); });
+  return x;
 }
 
 MotionProfile velocity_profile(const MotionState& start, double v_target, const Limits& lim, SlopeType slope) {

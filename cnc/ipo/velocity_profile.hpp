@@ -27,6 +27,10 @@ struct VelocityChange {
 // not applied here: the caller chooses v_target.
 VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope);
 
+// velocity_change(v, a, ...).end(s) for s = (p, v, a), without storing
+// the phases (the position planner's searches evaluate it many times).
+MotionState velocity_change_end(const MotionState& s, double v_target, const Limits& lim, SlopeType slope);
+
 // The velocity-target mode: v_target is clamped to [-lim.v, lim.v].
 MotionProfile velocity_profile(const MotionState& start, double v_target, const Limits& lim, SlopeType slope);
 
