@@ -13,7 +13,9 @@ bool usable(double x) { return x > 0 && std::isfinite(x); }
 
 bool rest_to_rest_phases(double distance, const Limits& lim, SlopeType slope, PhaseList& out) {
   const bool step = slope == SlopeType::step;
-  if (slope == SlopeType::sin2 || !usable(lim.v) || !usable(lim.a) || !(step || usable(lim.j))) return false;
+  if (slope == SlopeType::sin2 || !std::isfinite(distance) || !usable(lim.v) || !usable(lim.a) ||
+      !(step || usable(lim.j)))
+    return false;
   const double dir = distance < 0 ? -1.0 : 1.0, L = std::abs(distance), v = lim.v, a = lim.a;
   const double j = step ? std::numeric_limits<double>::infinity() : lim.j;
   // The velocity change 0 -> v: ramps to the peak acceleration a_p and back

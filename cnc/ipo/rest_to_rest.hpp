@@ -9,7 +9,8 @@ namespace hil::cnc {
 
 // The phases over `distance` (either sign) for TRAPEZ and STEP, as the
 // general planner builds them (drive, cruise or switch, arrival); false,
-// and nothing appended, for SIN2 or limits that are not positive and finite.
+// and nothing appended, for SIN2, a distance that is not finite or limits
+// that are not positive and finite (the general planner takes those).
 bool rest_to_rest_phases(double distance, const Limits& lim, SlopeType slope, PhaseList& out);
 
 }  // namespace hil::cnc
