@@ -79,6 +79,7 @@ class InlineList {
   InlineList() {}  // NOLINT: the storage stays unwritten on purpose
   InlineList(const InlineList& other) { *this = other; }
   InlineList& operator=(const InlineList& other) {
+    if (this == &other) return *this;
     size_ = 0;
     for (const T& x : other) push_back(x);
     return *this;

@@ -156,3 +156,35 @@ TEST_CASE("KRN-3 profile, issue 17: the phase-bracketed search gives the referen
   }
   comparison.require();
 }
+
+TEST_CASE("KRN-3 profile, issue 17: forward to a block end, fast and reference switch agree", "[ipo]") {
+  std::mt19937_64 rng(1720);
+  std::uniform_real_distribution<double> u(0, 1);
+  long cases = 0, failures = 0;
+  double worst = 0;
+  std::ostringstream first;
+  first.precision(17);
+  for (int i = 0; i < 100000; ++i) {
+    const Limits lim = random_limits(rng);
+    const SlopeType slope = i % 3 == 0 ? SlopeType::trapez : i % 3 == 1 ? SlopeType::step : SlopeType::sin2;
+    const MotionState s = i % 5 == 0 ? MotionState{} : MotionState{0, lim.v * u(rng), lim.a * (2 * u(rng) - 1), 0};
+    const double v_natural = velocity_after_ramp_to_zero(s.v, s.a, lim, slope);
+    if (v_natural < 0 || v_natural > lim.v) continue;
+    const double target = 0.05 * u(rng), v_end = i % 4 == 0 ? 0.0 : lim.v * u(rng);
+    ++cases;
+    const MotionProfile fast = block_profile(s, target, v_end, lim, slope);
+    const MotionProfile reference = block_profile(s, target, v_end, lim, slope, SwitchSearch::reference);
+    const double T = reference.duration(), difference = std::abs(fast.duration() - T);
+    if (T > 0) worst = std::max(worst, difference / T);
+    const bool ok = difference <= 1e-12 * T + 1e-15 && std::abs(fast.end().p - reference.end().p) <= 1e-12 &&
+                    std::abs(fast.end().v - reference.end().v) <= 1e-9 * lim.v;
+    if (!ok && ++failures <= 5)
+      first << to_string(slope) << " v0=" << s.v << " a0=" << s.a << " pf=" << target << " v_end=" << v_end
+            << " lim " << lim.v << ' ' << lim.a << ' ' << lim.j << ": T fast " << fast.duration() << " reference "
+            << T << ", end p " << fast.end().p << " / " << reference.end().p << '\n';
+  }
+  INFO(cases << " cases, " << failures << " failed, worst relative duration difference " << worst << ":\n"
+             << first.str());
+  CHECK(cases > 50000);
+  REQUIRE(failures == 0);
+}
