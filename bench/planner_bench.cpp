@@ -1,6 +1,7 @@
-// Benchmarks of the motion planner (issue 3, KRN-3): time per 1-D profile
-// over seeded random states, and decode + plan throughput of a generated
-// G01 program. Prints figures; asserts nothing. Run: build/bin/planner_bench
+// Benchmarks of the motion planner (issues 3 and 17, KRN-3): time per 1-D
+// profile per case family (bench/profile_cases.hpp), and decode + plan
+// throughput of a generated G01 program. Prints figures; asserts nothing.
+// Run: build/bin/planner_bench [--profiles-only]
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -18,6 +19,8 @@
 #include "path_segment.hpp"
 #include "look_ahead.hpp"
 #include "position_profile.hpp"
+#include "call_timer.hpp"
+#include "profile_cases.hpp"
 
 using namespace hil;
 using namespace hil::cnc;
@@ -31,29 +34,33 @@ double peak_rss_mib() {
   return usage.ru_maxrss / 1024.0;
 }
 
-void profile_times(int cases, SlopeType slope) {
-  std::mt19937_64 rng(20261123);
-  std::uniform_real_distribution<double> u(-1, 1), w(0, 1);
-  std::vector<double> ns(cases);
-  double checksum = 0;
-  for (int i = 0; i < cases; ++i) {
-    const Limits lim{std::pow(10.0, -2 + 2 * w(rng)), std::pow(10.0, -1 + 2.5 * w(rng)),
-                     std::pow(10.0, 3.5 * w(rng))};
-    MotionState s{0.02 * u(rng), lim.v * u(rng), lim.a * u(rng), 0};
-    const double target = 0.02 * u(rng);
-    const auto t0 = clock_type::now();
-    const MotionProfile p = position_profile(s, target, lim, slope);
-    const auto t1 = clock_type::now();
-    checksum += p.duration();
-    ns[i] = std::chrono::duration<double, std::nano>(t1 - t0).count();
+void print_times(const char* what, int cases, const bench::CallTimes& t) {
+  std::printf("  %-29s %7d cases: mean %5.0f ns, p50 %5.0f ns, p99 %5.0f ns, max %7.0f ns (%d of %d batches"
+              " preempted; checksum %.6g)\n",
+              what, cases, t.mean_ns, t.p50_ns, t.p99_ns, t.max_ns, t.preempted_batches,
+              t.batches + t.preempted_batches, t.checksum);
+}
+
+// TRAPEZ per case family, then every slope type from random states.
+void profile_times(const bench::CallTimer& timer) {
+  std::printf("position_profile, per call (mean of batches of 1000; p50/p99/max each call timed, %.3f ns/tick):\n",
+              timer.ns_per_tick());
+  for (bench::CaseFamily family : {bench::CaseFamily::random_from_rest, bench::CaseFamily::a_max_boundary,
+                                   bench::CaseFamily::v_max_boundary, bench::CaseFamily::random_state}) {
+    const int count = family == bench::CaseFamily::random_state ? 1000000 : 200000;
+    const std::vector<bench::ProfileCase> cases = bench::profile_cases(family, count);
+    const bench::CallTimes t = timer.time(count, [&](int i) {
+      return position_profile(cases[i].start, cases[i].target, cases[i].lim, SlopeType::trapez).duration();
+    });
+    print_times((std::string("TRAPEZ ") + bench::to_string(family)).c_str(), count, t);
   }
-  double mean = 0;
-  for (double x : ns) mean += x;
-  mean /= cases;
-  std::sort(ns.begin(), ns.end());
-  std::printf("position_profile %-6s %d random cases: mean %.0f ns, p50 %.0f ns, p99 %.0f ns, max %.0f ns"
-              " (checksum %.6g)\n",
-              to_string(slope), cases, mean, ns[cases / 2], ns[cases * 99 / 100], ns.back(), checksum);
+  const std::vector<bench::ProfileCase> cases = bench::profile_cases(bench::CaseFamily::random_state, 200000);
+  for (SlopeType slope : {SlopeType::step, SlopeType::sin2}) {
+    const bench::CallTimes t = timer.time(static_cast<int>(cases.size()), [&](int i) {
+      return position_profile(cases[i].start, cases[i].target, cases[i].lim, slope).duration();
+    });
+    print_times((std::string(to_string(slope)) + " random initial state").c_str(), static_cast<int>(cases.size()), t);
+  }
 }
 
 void decode_and_plan(int blocks) {
@@ -104,10 +111,9 @@ axes:
 
 }  // namespace
 
-int main() {
-  profile_times(1000000, SlopeType::trapez);
-  profile_times(200000, SlopeType::step);
-  profile_times(200000, SlopeType::sin2);
+int main(int argc, char** argv) {
+  profile_times(bench::CallTimer());
+  if (argc > 1 && std::string(argv[1]) == "--profiles-only") return 0;
   decode_and_plan(1000000);
   std::printf("peak memory (max RSS): %.1f MiB\n", peak_rss_mib());
   return 0;

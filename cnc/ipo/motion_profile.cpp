@@ -17,44 +17,15 @@ double g2(double u) { return u * u * u / 6 + std::sin(two_pi * u) / (two_pi * tw
 
 }  // namespace
 
-MotionState advance(const MotionState& s, const Phase& ph, double tau) {
+MotionState advance_sin2(const MotionState& s, const Phase& ph, double tau) {
+  const double T = ph.ramp_time, da = ph.ramp_delta_a, u0 = ph.u0, u = u0 + tau / T;
+  const double base = s.a - da * g0(u0);
   MotionState r;
-  if (ph.shape == Phase::Shape::sin2 && ph.ramp_time > 0) {
-    const double T = ph.ramp_time, da = ph.ramp_delta_a, u0 = ph.u0, u = u0 + tau / T;
-    const double base = s.a - da * g0(u0);
-    r.a = base + da * g0(u);
-    r.v = s.v + base * tau + da * T * (g1(u) - g1(u0));
-    r.p = s.p + s.v * tau + base * tau * tau / 2 + da * T * T * (g2(u) - g2(u0) - g1(u0) * (u - u0));
-    r.j = da / T * (1 - std::cos(two_pi * u));
-    return r;
-  }
-  if (!(ph.duration > 0)) {  // a STEP jump, or nothing
-    r = s;
-    r.a = ph.a_end;
-    r.j = 0;
-    return r;
-  }
-  const double j = ph.jerk;
-  r.p = s.p + tau * (s.v + tau * (s.a / 2 + tau * j / 6));
-  r.v = s.v + tau * (s.a + tau * j / 2);
-  r.a = tau >= ph.duration ? ph.a_end : s.a + tau * j;
-  r.j = j;
+  r.a = base + da * g0(u);
+  r.v = s.v + base * tau + da * T * (g1(u) - g1(u0));
+  r.p = s.p + s.v * tau + base * tau * tau / 2 + da * T * T * (g2(u) - g2(u0) - g1(u0) * (u - u0));
+  r.j = da / T * (1 - std::cos(two_pi * u));
   return r;
-}
-
-Phase hold(double duration, double a) {
-  Phase ph;
-  ph.duration = duration;
-  ph.a_end = a;
-  return ph;
-}
-
-Phase linear_ramp(double a_from, double a_to, double jerk) {
-  Phase ph;
-  ph.duration = std::isinf(jerk) ? 0.0 : std::abs(a_to - a_from) / jerk;
-  ph.jerk = ph.duration > 0 ? std::copysign(jerk, a_to - a_from) : 0.0;
-  ph.a_end = a_to;
-  return ph;
 }
 
 Phase sin2_ramp(double a_from, double a_to, double peak_jerk) {
@@ -67,28 +38,26 @@ Phase sin2_ramp(double a_from, double a_to, double peak_jerk) {
   return ph;
 }
 
-MotionProfile::MotionProfile(MotionState start, std::vector<Phase> phases)
-    : phases_(std::move(phases)), start_(start) {
+MotionProfile::MotionProfile(MotionState start, const PhaseList& phases) : phases_(phases), start_(start) {
   MotionState state = start;
   double time = 0;
-  starts_.reserve(phases_.size());
-  times_.reserve(phases_.size());
-  for (const Phase& ph : phases_) {
+  double v_scale = std::abs(start_.v);
+  for (std::size_t i = 0; i < phases_.size(); ++i) {
+    const Phase& ph = phases_[i];
     starts_.push_back(state);
     times_.push_back(time);
+    v_scale = std::max(v_scale, std::abs(state.v));
     state = advance(state, ph, ph.duration);
     time += ph.duration;
   }
   state.j = 0;
   end_ = state;
   duration_ = time;
-  double v_scale = std::abs(start_.v);
-  for (const MotionState& s : starts_) v_scale = std::max(v_scale, std::abs(s.v));
   moving_at_end_ = std::abs(end_.v) > 1e-9 * v_scale;
 }
 
 MotionState MotionProfile::at(double t) const {
-  if (!(t < duration_)) {
+  if (!(t < duration_) || phases_.empty()) {
     MotionState s = end_;
     if (t > duration_ && std::isfinite(t) && moving_at_end_) s.p += end_.v * (t - duration_);
     return s;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "bisect.hpp"
+#include "rest_to_rest.hpp"
 #include "velocity_profile.hpp"
 
 namespace hil::cnc {
@@ -13,8 +14,10 @@ namespace {
 class Planner {
  public:
   // v_end: the velocity to arrive with (a = 0); 0 for a target at rest.
-  Planner(const MotionState& start, double target, double v_end, const Limits& lim, SlopeType slope)
-      : start_{start.p, start.v, start.a, 0}, target_(target), v_end_(v_end), lim_(lim), slope_(slope) {}
+  Planner(const MotionState& start, double target, double v_end, const Limits& lim, SlopeType slope,
+          SwitchSearch search = SwitchSearch::fast)
+      : start_{start.p, start.v, start.a, 0}, target_(target), v_end_(v_end), lim_(lim), slope_(slope),
+        search_(search) {}
 
   // Either way along the axis, to rest on the target.
   MotionProfile to_rest() {
@@ -41,10 +44,10 @@ class Planner {
     // and it entered an arc of radius 0.058 mm at 7.3 mm/s).
     if (v_end_ > 0 && !lowered_) {
       auto fits = [&](double v) {
-        return velocity_change(start_.v, start_.a, v, lim_, slope_).end(start_).p <= target_;
+        return velocity_change_end(start_, v, lim_, slope_).p <= target_;
       };
       if (fits(0)) {
-        Planner lower(start_, target_, last_fitting(0.0, v_end_, fits), lim_, slope_);
+        Planner lower(start_, target_, last_fitting(0.0, v_end_, fits), lim_, slope_, search_);
         lower.lowered_ = true;
         return lower.forward();
       }
@@ -55,7 +58,8 @@ class Planner {
     // too fast (KRN-3: 162,455 mm/s^2 when the setpoint then jumps onto the
     // end point). Linear ramps at the full jerk, the same limit, need the
     // least way: arrive with them.
-    if (slope_ == SlopeType::sin2) return Planner(start_, target_, v_end_, lim_, SlopeType::trapez).forward();
+    if (slope_ == SlopeType::sin2)
+      return Planner(start_, target_, v_end_, lim_, SlopeType::trapez, search_).forward();
     return MotionProfile(start_, phases_of(closest_reachable_arrival()));
   }
 
@@ -81,8 +85,8 @@ class Planner {
   // 1 pm beyond the end is a setpoint jump of at most that much.
   double overshoot_tolerance() const { return 1e-12 * (1 + std::abs(start_.p) + std::abs(target_)); }
 
-  static std::vector<Phase> phases_of(const VelocityChange& change) {
-    std::vector<Phase> phases;
+  static PhaseList phases_of(const VelocityChange& change) {
+    PhaseList phases;
     change.append_to(phases);
     return phases;
   }
@@ -91,7 +95,10 @@ class Planner {
   // v_end at the instant from which that change ends on the target. With
   // lim.v = 0 (feed hold) the drive is a stop short of the target.
   MotionProfile drive_and_arrive(double dir, double miss) {
-    std::vector<Phase> phases;
+    PhaseList phases;
+    if (search_ == SwitchSearch::fast && start_.v == 0 && start_.a == 0 && v_end_ == 0 &&
+        rest_to_rest_phases(target_ - start_.p, lim_, slope_, phases))
+      return MotionProfile(start_, phases);
     drive_ = velocity_change(start_.v, start_.a, dir * lim_.v, lim_, slope_);
     const MotionState driven = drive_.end(start_);
     const double miss_driven = overshoot(driven);
@@ -103,18 +110,40 @@ class Planner {
       }
       return MotionProfile(start_, phases);
     }
-    const double t_switch = find_switch(miss, miss_driven);
     MotionState s = start_;
-    double left = t_switch;  // counted down: a sum of durations would drift past it
-    for (int i = 0; i < drive_.count && left > 0; ++i) {
-      Phase ph = drive_.phases[i];
-      if (ph.duration > left) {
-        ph.duration = left;
-        ph.a_end = advance(s, drive_.phases[i], left).a;
+    // SIN2 keeps the search over the whole drive: from a state inside a sin²
+    // pulse the stop point need not rise monotonically along the drive
+    // (forward to an end velocity, 5 of 82,198 random cases had a second root,
+    // up to 1.5 % apart in duration), and the phase-wise search would take
+    // another root than the one planned so far.
+    if (search_ == SwitchSearch::reference || slope_ == SlopeType::sin2) {
+      const double t_switch = find_switch_reference(miss, miss_driven);
+      double left = t_switch;  // counted down: a sum of durations would drift past it
+      for (int i = 0; i < drive_.count() && left > 0; ++i) {
+        Phase ph = drive_.phases[i];
+        if (ph.duration > left) {
+          ph.duration = left;
+          ph.a_end = advance(s, drive_.phases[i], left).a;
+        }
+        phases.push_back(ph);
+        s = advance(s, ph, ph.duration);
+        left -= ph.duration;
       }
-      phases.push_back(ph);
-      s = advance(s, ph, ph.duration);
-      left -= ph.duration;
+    } else {
+      const Switch at = find_switch(miss, miss_driven);
+      for (int i = 0; i < at.phase; ++i) {
+        phases.push_back(drive_.phases[i]);
+        s = advance(s, drive_.phases[i], drive_.phases[i].duration);
+      }
+      if (at.tau > 0) {
+        Phase ph = drive_.phases[at.phase];
+        if (ph.duration > at.tau) {
+          ph.a_end = advance(s, ph, at.tau).a;
+          ph.duration = at.tau;
+        }
+        phases.push_back(ph);
+        s = advance(s, ph, ph.duration);
+      }
     }
     velocity_change(s.v, s.a, v_end_, lim_, slope_).append_to(phases);
     return MotionProfile(start_, phases);
@@ -146,12 +175,86 @@ class Planner {
  private:
   // Where the fastest change to v_end from `s` ends, relative to the target.
   double overshoot(const MotionState& s) const {
-    return velocity_change(s.v, s.a, v_end_, lim_, slope_).end(s).p - target_;
+    return velocity_change_end(s, v_end_, lim_, slope_).p - target_;
+  }
+
+  // The switch from the drive to the arrival: `tau` into drive phase `phase`.
+  struct Switch {
+    int phase = 0;
+    double tau = 0;
+  };
+
+  // The overshoot rises monotonically along the drive from f0 to f1 (of
+  // opposite signs). The drive phase in which it changes sign is found from
+  // its values at the phase ends; within the phase it is smooth, and
+  // Anderson-Bjoerck regula falsi (a bisection step wherever the bracket
+  // did not halve in three) converges superlinearly. It stops at a zero, at
+  // a bracket of adjacent doubles, or at an overshoot 1/64 of what is_round_off
+  // accepts (the noise of evaluating it).
+  Switch find_switch(double f0, double f1) const {
+    const bool rising = f1 > 0;
+    auto beyond = [&](double f) { return (f > 0) == rising; };
+    const double f_tol = std::numeric_limits<double>::epsilon() *
+                         (std::abs(start_.p) + std::abs(target_) + (lim_.v + std::abs(start_.v)) * drive_.duration() +
+                          std::abs(start_.a) * drive_.duration() * drive_.duration());
+    // The phase: the first whose end is beyond the target.
+    int phase = drive_.count() - 1;
+    MotionState s = start_;
+    double f_lo = f0, f_hi = f1;
+    for (int i = 0; i + 1 < drive_.count(); ++i) {
+      const Phase& ph = drive_.phases[i];
+      const MotionState e = advance(s, ph, ph.duration);
+      if (ph.duration > 0) {
+        const double f = overshoot(e);
+        if (f == 0 || std::abs(f) <= f_tol) return {i, ph.duration};
+        if (beyond(f)) {
+          phase = i;
+          f_hi = f;
+          break;
+        }
+        f_lo = f;
+      }
+      s = e;
+    }
+    const Phase& ph = drive_.phases[phase];
+    double lo = 0, hi = ph.duration;
+    double g_lo = f_lo, g_hi = f_hi;  // f_lo, f_hi scaled down where a side was kept
+    double width_before = hi - lo;
+    int side = 0;  // the side replaced last: -1 lo, 1 hi
+    for (int iteration = 0; iteration < 200; ++iteration) {
+      double tau = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+      if (iteration % 3 == 2) {
+        if (hi - lo > width_before / 2) tau = lo + (hi - lo) / 2;
+        width_before = hi - lo;
+      }
+      if (!(tau > lo && tau < hi)) tau = lo + (hi - lo) / 2;
+      if (!(tau > lo && tau < hi)) break;  // the bracket is down to adjacent doubles
+      const double f = overshoot(advance(s, ph, tau));
+      if (f == 0 || std::abs(f) <= f_tol) return {phase, tau};
+      if (beyond(f)) {
+        if (side == 1) {  // lo kept twice: pull its weight down
+          const double m = 1 - f / f_hi;
+          g_lo *= m > 0 ? m : 0.5;
+        }
+        hi = tau;
+        f_hi = g_hi = f;
+        side = 1;
+      } else {
+        if (side == -1) {
+          const double m = 1 - f / f_lo;
+          g_hi *= m > 0 ? m : 0.5;
+        }
+        lo = tau;
+        f_lo = g_lo = f;
+        side = -1;
+      }
+    }
+    return {phase, std::abs(f_lo) <= std::abs(f_hi) ? lo : hi};
   }
 
   MotionState driven_for(double t) const {
     MotionState s = start_;
-    for (int i = 0; i < drive_.count; ++i) {
+    for (int i = 0; i < drive_.count(); ++i) {
       const double d = drive_.phases[i].duration;
       if (t <= d) return advance(s, drive_.phases[i], t);
       s = advance(s, drive_.phases[i], d);
@@ -160,9 +263,10 @@ class Planner {
     return s;
   }
 
-  // The overshoot rises monotonically along the drive from f0 to f1 (of
-  // opposite signs): Illinois regula falsi with bisection steps.
-  double find_switch(double f0, double f1) const {
+  // The solver before issue 17, the reference its fast paths are tested
+  // against: Illinois regula falsi with a bisection every fourth step, over
+  // the whole drive, down to adjacent doubles.
+  double find_switch_reference(double f0, double f1) const {
     double lo = 0, hi = drive_.duration();
     double f_lo = f0, f_hi = f1;  // the true values; f0 and f1 get halved
     int side = 0;
@@ -193,18 +297,20 @@ class Planner {
   bool lowered_ = false;  // v_end_ already lowered to one that fits
   Limits lim_;
   SlopeType slope_;
+  SwitchSearch search_;
   VelocityChange drive_;
 };
 
 }  // namespace
 
-MotionProfile position_profile(const MotionState& start, double target, const Limits& lim, SlopeType slope) {
-  return Planner(start, target, 0.0, lim, slope).to_rest();
+MotionProfile position_profile(const MotionState& start, double target, const Limits& lim, SlopeType slope,
+                               SwitchSearch search) {
+  return Planner(start, target, 0.0, lim, slope, search).to_rest();
 }
 
 MotionProfile block_profile(const MotionState& start, double end_position, double end_velocity,
-                            const Limits& lim, SlopeType slope) {
-  return Planner(start, end_position, std::clamp(end_velocity, 0.0, lim.v), lim, slope).forward();
+                            const Limits& lim, SlopeType slope, SwitchSearch search) {
+  return Planner(start, end_position, std::clamp(end_velocity, 0.0, lim.v), lim, slope, search).forward();
 }
 
 MotionProfile rest_to_rest(double distance, const Limits& lim, SlopeType slope) {

@@ -10,14 +10,30 @@
 // profile case of the 7-segment family (with or without acceleration or
 // velocity plateau, moves that start by braking or by turning back) without
 // a case table, and so has no boundaries where a case can be missed.
+//
+// Where it can be, the switching instant is closed-form (issue 17): from
+// rest to rest (TRAPEZ, STEP) the profile is symmetric and the distance
+// gives it directly (a cube root without acceleration plateau, a quadratic
+// with one). Elsewhere (TRAPEZ, STEP) the drive phase holding it is found
+// from the values at the phase ends, and a regula falsi with Anderson-Bjoerck
+// weights and bisection safeguard finds it within that phase, where the
+// function is smooth. SIN2 keeps the search over the whole drive. No path
+// allocates: the profile holds its phases in place.
 #include "motion_profile.hpp"
 #include "slope.hpp"
 
 namespace hil::cnc {
 
+// How the switching instant is found: `fast` is the product's; `reference`
+// is the solver before issue 17 (Illinois regula falsi and bisection over
+// the whole drive, down to adjacent doubles), kept so that tests can check
+// the fast one against it.
+enum class SwitchSearch { fast, reference };
+
 // States outside the limits (|v| > lim.v or |a| > lim.a) are brought back
 // at full jerk first.
-MotionProfile position_profile(const MotionState& start, double target, const Limits& lim, SlopeType slope);
+MotionProfile position_profile(const MotionState& start, double target, const Limits& lim, SlopeType slope,
+                               SwitchSearch search = SwitchSearch::fast);
 
 // Forward along a path: from `start` (v >= 0) to `end_position`, arriving
 // with `end_velocity` (clamped to [0, lim.v]) and a = 0, cruising at lim.v.
@@ -25,7 +41,7 @@ MotionProfile position_profile(const MotionState& start, double target, const Li
 // the reachable velocity closest to it (and if even ramping a to 0 passes
 // the end, it does that). lim.v = 0 (feed hold, override 0) stops short.
 MotionProfile block_profile(const MotionState& start, double end_position, double end_velocity,
-                            const Limits& lim, SlopeType slope);
+                            const Limits& lim, SlopeType slope, SwitchSearch search = SwitchSearch::fast);
 
 // Rest-to-rest from p = 0 to p = distance.
 MotionProfile rest_to_rest(double distance, const Limits& lim, SlopeType slope = SlopeType::trapez);

@@ -1,5 +1,7 @@
 #pragma once
 // Slope types of #SLOPE[TYPE=..] (KRN-3): how the acceleration changes.
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -23,17 +25,28 @@ struct Limits {
 
 // Mean jerk over a ramp of the slope type (infinite for STEP): a ramp of da
 // takes |da| / rate and changes the velocity by (a_from + a_to) |da| / (2 rate).
-double ramp_rate(const Limits& lim, SlopeType slope);
+inline double ramp_rate(const Limits& lim, SlopeType slope) {
+  switch (slope) {
+    case SlopeType::step: return std::numeric_limits<double>::infinity();
+    case SlopeType::trapez: return lim.j;
+    case SlopeType::sin2: return lim.j / 2;  // a sin² pulse of peak j averages j/2
+  }
+  return lim.j;
+}
 
 // Jerk with which a start acceleration is brought back towards 0: full
 // jerk for every slope type (infinite for STEP). A SIN2 state met in the
 // middle of a ramp (replanning at a block transition, feed hold) must not
 // wait for a fresh sin² pulse: that would carry |v| past the velocity the
 // interrupted ramp was heading for.
-double unwind_rate(const Limits& lim, SlopeType slope);
+inline double unwind_rate(const Limits& lim, SlopeType slope) {
+  return slope == SlopeType::step ? std::numeric_limits<double>::infinity() : lim.j;
+}
 
 // The velocity reached when the start acceleration a is brought straight
 // back to 0 (at unwind_rate).
-double velocity_after_ramp_to_zero(double v, double a, const Limits& lim, SlopeType slope);
+inline double velocity_after_ramp_to_zero(double v, double a, const Limits& lim, SlopeType slope) {
+  return v + a * std::abs(a) / (2 * unwind_rate(lim, slope));
+}
 
 }  // namespace hil::cnc

@@ -40,32 +40,37 @@ double start_ramp_gain(double a0, double a_p, double rate, double unwind_rate) {
 
 double VelocityChange::duration() const {
   double t = 0;
-  for (int i = 0; i < count; ++i) t += phases[i].duration;
+  for (const Phase& ph : phases) t += ph.duration;
   return t;
 }
 
 MotionState VelocityChange::end(const MotionState& s) const {
   MotionState x = s;
-  for (int i = 0; i < count; ++i) x = advance(x, phases[i], phases[i].duration);
+  for (const Phase& ph : phases) x = advance(x, ph, ph.duration);
   return x;
 }
 
-void VelocityChange::append_to(std::vector<Phase>& out) const {
-  for (int i = 0; i < count; ++i) out.push_back(phases[i]);
+void VelocityChange::append_to(PhaseList& out) const {
+  for (const Phase& ph : phases) out.push_back(ph);
 }
 
-VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope) {
+namespace {
+
+// The phases of the change, one by one into `emit`: kept apart from where
+// they go, so that the end state of a change (what the position planner's
+// search evaluates) is computed by the same arithmetic without storing them.
+template <typename Emit>
+void plan_change(double v, double a, double v_target, const Limits& lim, SlopeType slope, Emit&& emit) {
   const double rate = ramp_rate(lim, slope), unwinding = unwind_rate(lim, slope);
   // Solve the rising case; a falling change is its mirror image.
   const double v_ramp_down = velocity_after_ramp_to_zero(v, a, lim, slope);
-  VelocityChange change;
   // Ramping straight to a = 0 lands on v_target to round-off: any plateau
   // found beyond that would be the square root of noise.
   const double round_off = 16 * std::numeric_limits<double>::epsilon() *
                            (lim.v + std::abs(v) + std::abs(v_target) + std::abs(v_ramp_down - v));
   if (std::abs(v_target - v_ramp_down) <= round_off) {
-    change.phases[change.count++] = unwind(a, 0.0, lim, slope);
-    return change;
+    emit(unwind(a, 0.0, lim, slope));
+    return;
   }
   const double sign = v_ramp_down < v_target ? 1.0 : -1.0;
   const double v0 = sign * v, a0 = sign * a, vt = sign * v_target;
@@ -79,21 +84,34 @@ VelocityChange velocity_change(double v, double a, double v_target, const Limits
   const double t_hold = a_p > 0 ? std::max(0.0, dv / a_p) : 0.0;
 
   if (a0 < 0 && slope == SlopeType::sin2) {  // the wrong way: unwind, then a fresh pulse
-    change.phases[change.count++] = unwind(a, 0.0, lim, slope);
-    change.phases[change.count++] = ramp(0.0, sign * a_p, lim, slope);
+    emit(unwind(a, 0.0, lim, slope));
+    emit(ramp(0.0, sign * a_p, lim, slope));
   } else if (a_p < a0) {
-    change.phases[change.count++] = unwind(a, sign * a_p, lim, slope);
+    emit(unwind(a, sign * a_p, lim, slope));
   } else {
-    change.phases[change.count++] = ramp(a, sign * a_p, lim, slope);
+    emit(ramp(a, sign * a_p, lim, slope));
   }
-  change.phases[change.count++] = hold(t_hold, sign * a_p);
-  change.phases[change.count++] = ramp(sign * a_p, 0.0, lim, slope);
+  emit(hold(t_hold, sign * a_p));
+  emit(ramp(sign * a_p, 0.0, lim, slope));
+}
+
+}  // namespace
+
+VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope) {
+  VelocityChange change;
+  plan_change(v, a, v_target, lim, slope, [&](const Phase& ph) { change.phases.push_back(ph); });
   return change;
+}
+
+MotionState velocity_change_end(const MotionState& s, double v_target, const Limits& lim, SlopeType slope) {
+  MotionState x = s;
+  plan_change(s.v, s.a, v_target, lim, slope, [&](const Phase& ph) { x = advance(x, ph, ph.duration); });
+  return x;
 }
 
 MotionProfile velocity_profile(const MotionState& start, double v_target, const Limits& lim, SlopeType slope) {
   const double vt = std::clamp(v_target, -lim.v, lim.v);
-  std::vector<Phase> phases;
+  PhaseList phases;
   velocity_change(start.v, start.a, vt, lim, slope).append_to(phases);
   MotionState s = start;
   s.j = 0;

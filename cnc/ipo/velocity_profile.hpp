@@ -3,8 +3,6 @@
 // (KRN-3): from any (v, a) to a target velocity with acceleration 0. The
 // velocity-target mode for feed hold, override and stop, and the building
 // block of the position planner.
-#include <array>
-
 #include "motion_profile.hpp"
 #include "slope.hpp"
 
@@ -12,13 +10,13 @@ namespace hil::cnc {
 
 // Ramp to a plateau (SIN2: via a = 0), hold it, ramp back to 0.
 struct VelocityChange {
-  std::array<Phase, 4> phases{};
-  int count = 0;
+  InlineList<Phase, 4> phases;
+  int count() const { return static_cast<int>(phases.size()); }
   double duration() const;
   // State at the end, begun in `s`.
   MotionState end(const MotionState& s) const;
   // Appends the phases to `out`.
-  void append_to(std::vector<Phase>& out) const;
+  void append_to(PhaseList& out) const;
 };
 
 // From (v, a) to (v_target, 0), fastest under lim.a and lim.j for the slope
@@ -28,6 +26,10 @@ struct VelocityChange {
 // pulse; the velocity overshoot that remains cannot be avoided. lim.v is
 // not applied here: the caller chooses v_target.
 VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope);
+
+// velocity_change(v, a, ...).end(s) for s = (p, v, a), without storing
+// the phases (the position planner's searches evaluate it many times).
+MotionState velocity_change_end(const MotionState& s, double v_target, const Limits& lim, SlopeType slope);
 
 // The velocity-target mode: v_target is clamped to [-lim.v, lim.v].
 MotionProfile velocity_profile(const MotionState& start, double v_target, const Limits& lim, SlopeType slope);
