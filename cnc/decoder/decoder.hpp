@@ -15,6 +15,9 @@
 // the ranges of value_ranges.hpp (1 km, F, N, G, M, P, ...) is an error
 // too, and so is a control character in a line: every number of a block
 // is finite and in range.
+//
+// decode_program decodes a whole program at once (tests, tools); the
+// channel streams it (program_decoder.hpp): same blocks, same error.
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -256,7 +256,7 @@ void assign_parameter(const std::string& code, size_t equals, DecoderState& stat
 
 }  // namespace
 
-bool decode_line(const std::string& line, int64_t line_nr, int64_t lines_read, DecoderState& state,
+bool decode_line(std::string_view line, int64_t line_nr, int64_t lines_read, DecoderState& state,
                  std::vector<Block>& out) {
   const std::string code = strip_comments(line);
   const size_t first = code.find_first_not_of(" \t\r");

@@ -98,7 +98,7 @@ Word read_word(const std::string& code, size_t& i) {
 
 }  // namespace
 
-void check_characters(const std::string& line) {
+void check_characters(std::string_view line) {
   const auto bad = std::find_if(line.begin(), line.end(), [](char c) { return is_control(c) && c != '\t' && c != '\r'; });
   if (bad == line.end()) return;
   throw LineError{"control character " + hex_code(*bad) + " in column " + std::to_string(bad - line.begin() + 1) +
@@ -124,7 +124,7 @@ std::string printable(std::string_view text, size_t max_bytes) {
 
 std::string command_keyword(const std::string& command) { return command.substr(0, command.find_first_of(" =")); }
 
-std::string strip_comments(const std::string& line) {
+std::string strip_comments(std::string_view line) {
   std::string out;
   bool in_paren = false;
   for (char c : line) {
