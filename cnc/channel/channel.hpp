@@ -63,6 +63,8 @@ class Channel : private PathObserver {
   const HliState& hli() const { return hli_; }
   // Events raised since the last call.
   std::vector<Event> take_events() { return events_.take(); }
+  // The blocks it holds now (issue 17: bounded, whatever the program's length).
+  size_t blocks_held() const { return path_->blocks().held() + (program_ ? program_->blocks_held() : 0); }
   // Program end or error reached: the channel commands no more motion.
   bool finished() const;
 

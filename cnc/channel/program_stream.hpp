@@ -36,6 +36,8 @@ class ProgramStream {
   // What the interpolator reads.
   BlockSource& blocks() { return *lift_; }
 
+  // Blocks its stages hold.
+  size_t blocks_held() const { return decoder_->blocks_held() + pre_output_->blocks_held() + lift_->blocks_held(); }
   // The decode error, once the stream has met it (once).
   std::optional<Event> take_error();
   // Warnings of the pre-output (P-CHAN-00070) since the last call.
