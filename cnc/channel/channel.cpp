@@ -92,6 +92,7 @@ void Channel::apply_reset(const ControlUnitBool& reset) {
 void Channel::begin_program_run() {
   const std::vector<AxisSetpoint> standing = setpoints_;
   path_.emplace(machine_, static_cast<PathObserver&>(*this));
+  program_.reset();  // the aborted run's stream (the new interpolator reads nothing yet)
   for (size_t i = 0; i < standing.size(); ++i) path_->place_axis(i, standing[i].position);
   setpoints_ = path_->setpoints();
   insert_.emplace(machine_);

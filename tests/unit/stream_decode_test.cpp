@@ -25,6 +25,7 @@
 #include "program_stream.hpp"
 #include "reference/reference_decoder.hpp"
 #include "scenario.hpp"
+#include "short_cut_target.hpp"
 #include "test_machine.hpp"
 
 using namespace hil;
@@ -347,4 +348,43 @@ TEST_CASE("issue 17 KRN-5 DDTG-5 DPS-3: the channel holds a bounded number of bl
   // what the stages hold (10 motion blocks for pre-output, one line ahead).
   CHECK(most <= 120 + 50 + 60);
   CHECK(most >= 50);
+}
+
+TEST_CASE("issue 17 DDTG-5 DDTG-6: the short-cut target search reads ahead at most short_cut_search_blocks blocks",
+          "[ddtg][stream]") {
+  std::vector<Block> blocks(short_cut_search_blocks + 10);
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    blocks[i].has_motion = true;
+    blocks[i].motion.start = {double(i), 0, 0};
+    blocks[i].motion.end = {double(i + 1), 0, 0};
+  }
+  blocks.back().ddtg_end_marker = 1;  // beyond the search
+  ShortCutTarget far = short_cut_target(blocks, 0, 1);
+  CHECK_FALSE(far.target);
+  CHECK(far.search_limit);
+  blocks[short_cut_search_blocks - 5].ddtg_end_marker = 1;  // within it
+  ShortCutTarget near = short_cut_target(blocks, 0, 1);
+  REQUIRE(near.target);
+  CHECK(*near.target == short_cut_search_blocks - 6);
+  CHECK_FALSE(near.search_limit);
+}
+
+TEST_CASE("issue 17 DPS-3: block search on a long program passes it once and keeps only what it needs", "[channel][stream]") {
+  MachineConfig machine = test::xyz_machine();
+  std::string text = "N1 G01 X0 Y0 Z0 F6000\n";
+  for (int i = 2; i <= 20000; ++i) text += "N" + std::to_string(i) + " X" + std::to_string((i % 2) * 10) + "\n";
+  text += "M30\n";
+  Channel channel(machine, text);
+  HliControl control;
+  control.program_start.enable_w = true;
+  control.block_search.enable_w = true;
+  control.block_search.command_w.type = 4;
+  control.block_search.command_w.block_nr = 19000;
+  control.block_search.command_w.distance = (18997 * 10.0 + 4) * hli_units_per_mm;  // 4 mm into N19000 (N3 .. N18999: 10 mm each)
+  channel.step(0, control);
+  control.program_start.command_w = true;
+  channel.step(1, control);
+  CHECK(channel.hli().block_search.state_r.state == block_search_state::repositioning);
+  CHECK(channel.hli().block_search.state_r.continuation_block_nr == 19000);
+  CHECK(channel.blocks_held() < 300);
 }
