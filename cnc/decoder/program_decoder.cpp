@@ -1,5 +1,6 @@
 #include "program_decoder.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -83,8 +84,11 @@ void ProgramDecoder::decode_next_line() {
   }
   const int64_t line_nr = static_cast<int64_t>(line_) + 1;
   try {
-    if (++lines_read_ > max_lines_read_)
-      throw LineError{"more than " + std::to_string(max_lines_read_) + " lines read: endless $FOR loop?"};
+    // Lines read again by $FOR loops are counted, not the program's own:
+    // a program may be of any length, an endless loop is still an error.
+    furthest_ = std::max(furthest_, static_cast<int64_t>(line_) + 1);
+    if (++lines_read_ - furthest_ > max_lines_read_)
+      throw LineError{"more than " + std::to_string(max_lines_read_) + " lines read again by $FOR loops: endless $FOR loop?"};
     decoding::check_characters(lines_[line_]);
     if (const std::optional<size_t> next = loops_.control_flow(lines_, line_, state_.parameters)) {
       line_ = *next;

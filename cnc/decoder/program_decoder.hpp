@@ -25,7 +25,8 @@ namespace hil::cnc {
 
 class ProgramDecoder : public BlockSource {
  public:
-  // An endless loop is an error, not a hang.
+  // An endless loop is an error, not a hang: at most this many lines are
+  // read again by $FOR loops (a program's own lines count once).
   static constexpr int64_t default_max_lines_read = 10000000;
 
   // `start`: the axis positions at program start (mm, machine axis order);
@@ -56,6 +57,7 @@ class ProgramDecoder : public BlockSource {
   decoding::ForLoops loops_;
   int64_t max_lines_read_;
   int64_t lines_read_ = 0;
+  int64_t furthest_ = 0;  // 1 + the furthest line read
   size_t line_ = 0;  // the next line to decode, 0-based
   std::vector<Block> out_;  // decoded; from head_ on not handed out yet
   size_t head_ = 0;

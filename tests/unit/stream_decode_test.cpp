@@ -388,3 +388,17 @@ TEST_CASE("issue 17 DPS-3: block search on a long program passes it once and kee
   CHECK(channel.hli().block_search.state_r.continuation_block_nr == 19000);
   CHECK(channel.blocks_held() < 300);
 }
+
+TEST_CASE("issue 17 KRN-1: the endless-loop limit counts lines read again by $FOR loops, not a program's length",
+          "[decoder][stream]") {
+  const MachineConfig machine = test::xyz_machine();
+  std::string text = "G01 F6000\n";
+  for (int i = 1; i <= 50; ++i) text += "X" + std::to_string(i) + "\n";
+  const DecodedProgram long_program = decode_program(text, machine, {0, 0, 0}, 10);
+  CHECK_FALSE(long_program.error);
+  CHECK(long_program.blocks.size() == 50);
+  const DecodedProgram loop =
+      decode_program("G01 F6000\n$FOR P1 = 1, 100\nX1\nX2\n$ENDFOR\n", machine, {0, 0, 0}, 10);
+  REQUIRE(loop.error);
+  CHECK_THAT(loop.error->message, Catch::StartsWith("more than 10 lines read again by $FOR loops"));
+}
