@@ -169,6 +169,7 @@ void decode_and_plan(int64_t blocks, const std::string& dir) {
 
 // Each size in a process of its own: peak RSS is per process.
 void decode_and_plan_forked(int64_t blocks, const std::string& dir) {
+  std::fflush(stdout);  // not printed again by the child
   const pid_t child = ::fork();
   if (child == 0) {
     decode_and_plan(blocks, dir);
