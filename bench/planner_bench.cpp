@@ -1,20 +1,27 @@
 // Benchmarks of the motion planner (issues 3 and 17, KRN-3): time per 1-D
 // profile per case family (bench/profile_cases.hpp), and decode + plan
-// throughput of a generated G01 program. Prints figures; asserts nothing.
-// Run: build/bin/planner_bench [--profiles-only]
+// throughput of a generated G01 program streamed from a file, with the peak
+// memory of each size in a process of its own. Prints figures; asserts
+// nothing.
+// Run: build/bin/planner_bench [--profiles-only | --blocks N [--dir D]]
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
 
-#include "decoder.hpp"
+#include "line_source.hpp"
+#include "program_stream.hpp"
 #include "machine_config.hpp"
 #include "path_segment.hpp"
 #include "look_ahead.hpp"
@@ -63,58 +70,144 @@ void profile_times(const bench::CallTimer& timer) {
   }
 }
 
-void decode_and_plan(int blocks) {
-  const MachineConfig machine = parse_machine_config(YAML::Load(R"(
+MachineConfig xyz_machine() {
+  return parse_machine_config(YAML::Load(R"(
 cycle_time_us: 1000
 axes:
   - {name: X, v_max: 250, a_max: 2000, j_max: 40000, kv: 40, velocity_lag_s: 0.002}
   - {name: Y, v_max: 250, a_max: 2000, j_max: 40000, kv: 40, velocity_lag_s: 0.002}
   - {name: Z, v_max: 150, a_max: 1500, j_max: 30000, kv: 35, velocity_lag_s: 0.0025}
 )"));
-  std::string program;
-  program.reserve(static_cast<size_t>(blocks) * 40);
+}
+
+// The generated program, written line by line (never held whole): random
+// points, every transition a corner. Bytes written.
+size_t write_program(const std::string& path, int64_t blocks) {
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if (!out) {
+    std::perror(path.c_str());
+    std::exit(1);
+  }
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(0, 100);
-  char line[96];
-  for (int i = 0; i < blocks; ++i) {
-    std::snprintf(line, sizeof line, "N%d G01 X%.3f Y%.3f Z%.3f F6000\n", i + 1, u(rng), u(rng), u(rng) / 10);
-    program += line;
+  size_t bytes = 0;
+  for (int64_t i = 0; i < blocks; ++i) {
+    // The points the bench always drew: g++ evaluated the earlier
+    // snprintf's arguments right to left (Z first).
+    const double z = u(rng) / 10;
+    const double y = u(rng);
+    const double x = u(rng);
+    bytes += static_cast<size_t>(std::fprintf(out, "N%lld G01 X%.3f Y%.3f Z%.3f F6000\n", static_cast<long long>(i + 1),
+                                              x, y, z));
   }
-  program += "M30\n";
+  bytes += static_cast<size_t>(std::fprintf(out, "M30\n"));
+  std::fclose(out);
+  return bytes;
+}
+
+// Decodes the program as the channel does (ProgramStream: the streamed
+// decoder, M function pre-output, the lift's preparation); with `plan`,
+// each motion block enters the look-ahead (corner rule, backward pass) and
+// the front's stretch is planned when it leaves, as the interpolator does.
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + t.tv_nsec * 1e-9;
+}
+
+// Times are CPU time of this process (the machine is shared: wall time
+// carries the others' load), wall time beside it.
+struct Pass {
+  double seconds = 0;
+  double wall = 0;
+  int64_t blocks = 0;
+  double planned_time = 0;
+  bool error = false;
+};
+Pass run_pass(const std::string& path, const MachineConfig& machine, bool plan) {
   const auto t0 = clock_type::now();
-  const DecodedProgram decoded = decode_program(program, machine, {0, 0, 0});
-  const auto t1 = clock_type::now();
-  // As the channel does it: each block enters the look-ahead (corner rule,
-  // backward pass); the front's stretch is planned when the block starts.
+  const double cpu0 = cpu_seconds();
+  ProgramStream stream(program_file(path), machine, {0, 0, 0}, [](LiftRange) {});
+  BlockSource& source = stream.blocks();
   LookAhead look_ahead(machine);
-  double v_entry = 0, planned_time = 0;
+  Pass pass;
+  double v_entry = 0;
   auto plan_front = [&] {
     const Stretch st = look_ahead.stretch(v_entry);
-    planned_time += block_profile({0, v_entry, 0, 0}, st.length, st.v_end, st.lim, st.slope).duration();
+    pass.planned_time += block_profile({0, v_entry, 0, 0}, st.length, st.v_end, st.lim, st.slope).duration();
     v_entry = look_ahead.front().v_end;
     look_ahead.pop_front();
   };
-  for (size_t i = 0; i < decoded.blocks.size(); ++i) {
-    if (!decoded.blocks[i].has_motion) continue;
+  Block block;
+  for (size_t i = 0; source.next(block); ++i) {
+    ++pass.blocks;
+    if (!plan || !block.has_motion) continue;
     if (look_ahead.full()) plan_front();
-    look_ahead.push(i, PathSegment(decoded.blocks[i].motion, machine), decoded.blocks[i].slope);
+    look_ahead.push(i, PathSegment(block.motion, machine), block.slope);
   }
   while (!look_ahead.empty()) plan_front();
-  const auto t2 = clock_type::now();
-  const double decode_s = std::chrono::duration<double>(t1 - t0).count();
-  const double plan_s = std::chrono::duration<double>(t2 - t1).count();
-  std::printf("G01 program of %d blocks (%.1f MiB text): decode %.3f s (%.0f blocks/s), look-ahead + plan"
-              " %.3f s (%.0f blocks/s), decode+plan %.0f blocks/s; checksum %.6f s%s\n",
-              blocks, program.size() / 1048576.0, decode_s, blocks / decode_s, plan_s, blocks / plan_s,
-              blocks / (decode_s + plan_s), planned_time, decoded.error ? " (DECODE ERROR)" : "");
+  pass.seconds = cpu_seconds() - cpu0;
+  pass.wall = std::chrono::duration<double>(clock_type::now() - t0).count();
+  pass.error = stream.take_error().has_value();
+  return pass;
+}
+
+// One size, in this process: the program is generated into a temporary
+// file and streamed from it, decoded alone, then decoded and planned.
+void decode_and_plan(int64_t blocks, const std::string& dir) {
+  const MachineConfig machine = xyz_machine();
+  const std::string path = dir + "/planner_bench_" + std::to_string(::getpid()) + ".nc";
+  const size_t bytes = write_program(path, blocks);
+  const double rss_before = peak_rss_mib();
+  const Pass decode = run_pass(path, machine, false);
+  const Pass both = run_pass(path, machine, true);
+  std::remove(path.c_str());
+  const double plan_s = both.seconds - decode.seconds;
+  const double n = static_cast<double>(blocks);
+  std::printf("G01 program of %lld blocks (%.1f MiB file, streamed), CPU time: decode %.3f s (%.0f blocks/s), "
+              "look-ahead + plan %.3f s (%.0f blocks/s), decode+plan %.3f s (%.0f blocks/s); wall %.3f / %.3f s; "
+              "peak RSS %.1f MiB (%.1f before decoding); checksum %.6f s%s\n",
+              static_cast<long long>(blocks), bytes / 1048576.0, decode.seconds, n / decode.seconds, plan_s,
+              n / plan_s, both.seconds, n / both.seconds, decode.wall, both.wall, peak_rss_mib(), rss_before,
+              both.planned_time,
+              decode.error || both.error || both.blocks != blocks + 1 ? " (DECODE ERROR)" : "");
+  std::fflush(stdout);
+}
+
+// Each size in a process of its own: peak RSS is per process.
+void decode_and_plan_forked(int64_t blocks, const std::string& dir) {
+  std::fflush(stdout);  // not printed again by the child
+  const pid_t child = ::fork();
+  if (child == 0) {
+    decode_and_plan(blocks, dir);
+    std::_Exit(0);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
 }
 
 }  // namespace
 
+// planner_bench                      profiles, then decode + plan of 10 k, 1 M and 10 M blocks
+// planner_bench --profiles-only      profiles only
+// planner_bench --blocks N [--dir D]  decode + plan of N blocks only (temporary file in D, default /tmp)
 int main(int argc, char** argv) {
+  int64_t only = 0;
+  std::string dir = "/tmp";
+  if (argc > 1 && std::string(argv[1]) == "--profiles-only") {
+    profile_times(bench::CallTimer());
+    return 0;
+  }
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string arg = argv[i];
+    if (arg == "--blocks") only = std::atoll(argv[i + 1]);
+    else if (arg == "--dir") dir = argv[i + 1];
+  }
+  if (only > 0) {
+    decode_and_plan(only, dir);
+    return 0;
+  }
   profile_times(bench::CallTimer());
-  if (argc > 1 && std::string(argv[1]) == "--profiles-only") return 0;
-  decode_and_plan(1000000);
-  std::printf("peak memory (max RSS): %.1f MiB\n", peak_rss_mib());
+  for (const int64_t blocks : {int64_t{10000}, int64_t{1000000}, int64_t{10000000}}) decode_and_plan_forked(blocks, dir);
   return 0;
 }

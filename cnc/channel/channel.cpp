@@ -3,12 +3,13 @@
 #include <cmath>
 #include <string>
 
-#include "decoder.hpp"
-#include "m_pre_output.hpp"
 
 namespace hil::cnc {
 
 Channel::Channel(MachineConfig machine, std::string nc_program)
+    : Channel(std::move(machine), program_text(std::move(nc_program))) {}
+
+Channel::Channel(MachineConfig machine, ProgramText nc_program)
     : machine_(std::move(machine)), nc_program_(std::move(nc_program)), path_(std::in_place, machine_, static_cast<PathObserver&>(*this)),
       feed_(machine_.override_max_percent), ddtg_(machine_), backward_(machine_), insert_(std::in_place, machine_),
       lift_(std::in_place, machine_), setpoints_(path_->setpoints()) {
@@ -91,6 +92,7 @@ void Channel::apply_reset(const ControlUnitBool& reset) {
 void Channel::begin_program_run() {
   const std::vector<AxisSetpoint> standing = setpoints_;
   path_.emplace(machine_, static_cast<PathObserver&>(*this));
+  program_.reset();  // the aborted run's stream (the new interpolator reads nothing yet)
   for (size_t i = 0; i < standing.size(); ++i) path_->place_axis(i, standing[i].position);
   setpoints_ = path_->setpoints();
   insert_.emplace(machine_);
@@ -115,21 +117,17 @@ void Channel::begin_program_run() {
 void Channel::start_program(const ControlUnitBlockSearch& search) {
   std::vector<double> start_position;  // a lift axis parked by the last program's lift included
   for (const AxisSetpoint& setpoint : setpoints_) start_position.push_back(setpoint.position);
-  DecodedProgram program = decode_program(nc_program_, machine_, start_position);
-  if (program.error) {
-    decode_failed_ = true;
-    events_.raise(*program.error);  // reported at once; the blocks before it still run
-  }
-  std::vector<Event> warnings;
-  std::vector<Block> blocks = apply_m_pre_output(std::move(program.blocks), machine_, warnings);
-  for (Event& warning : warnings) events_.raise(std::move(warning));
+  lift_->begin_program();
+  program_ = std::make_unique<ProgramStream>(nc_program_, machine_, start_position,
+                                             [this](LiftRange range) { lift_->add_range(std::move(range)); });
   hli_.block_search.state_r = BlockSearchState();
-  if (search.enable_w && !search_continuation(search, blocks, start_position)) {
+  if (search.enable_w && !search_continuation(search)) {
+    take_stream_events();
     decode_failed_ = false;  // the program did not start: the channel stays READY
+    program_.reset();
     return;
   }
-  lift_->prepare(blocks, start_position);
-  path_->load(std::move(blocks));
+  path_->load(program_->blocks(), backward_.stored_blocks());
   backward_refused_ = false;
   start_cycle_ = cycle_;
   hli_.channel_state = ChannelState::active;
@@ -137,6 +135,17 @@ void Channel::start_program(const ControlUnitBlockSearch& search) {
   path_->go_on_from_standstill(0);
   update_hold();
   interpolate(0);
+}
+
+// Decoding goes on as the path needs blocks: an error is reported when the
+// stream meets it (the blocks before it still run), not at program start.
+void Channel::take_stream_events() {
+  if (!program_) return;
+  if (std::optional<Event> error = program_->take_error()) {
+    decode_failed_ = true;
+    events_.raise(std::move(*error));
+  }
+  for (Event& warning : program_->take_warnings()) events_.raise(std::move(warning));
 }
 
 void Channel::run_path(const HliControl& control, double t) {
@@ -152,14 +161,15 @@ void Channel::run_path(const HliControl& control, double t) {
   if (hli_.channel_state == ChannelState::active) change_direction(t, path_->standing(t));
 }
 
-bool Channel::search_continuation(const ControlUnitBlockSearch& search, std::vector<Block>& blocks,
-                                  const std::vector<double>& start_position) {
+bool Channel::search_continuation(const ControlUnitBlockSearch& search) {
   BlockSearchState& state = hli_.block_search.state_r;
   BlockSearchRequest request;
   request.type = static_cast<int>(search.command_w.type);
   request.block_nr = search.command_w.block_nr;
   request.distance_mm = search.command_w.distance / hli_units_per_mm;
-  BlockSearchOutcome outcome = search_block(blocks, request, machine_);
+  size_t continuation = 0;
+  BlockSearchOutcome outcome = program_->search(request, continuation);
+  take_stream_events();  // a decode error before the searched block comes first
   if (!outcome.continuation) {
     if (outcome.error) events_.raise(*outcome.error);
     state.state = block_search_state::error;
@@ -167,15 +177,12 @@ bool Channel::search_continuation(const ControlUnitBlockSearch& search, std::vec
   }
   const Continuation& c = *outcome.continuation;
   if (c.warning) events_.raise(*c.warning);
-  const Block& block = blocks[c.block];
   state.state = block_search_state::repositioning;
   state.continuation_moved = c.warning.has_value();
-  state.continuation_block_nr = static_cast<uint32_t>(block.block_nr);
-  state.continuation_nc_line = block.nc_line;
+  state.continuation_block_nr = static_cast<uint32_t>(c.block_nr);
+  state.continuation_nc_line = c.nc_line;
   state.continuation_distance = c.distance_mm * hli_units_per_mm;
-  const size_t rest = blocks.size() - c.block;
-  blocks = continued_program(blocks, c, start_position, machine_);
-  continuation_block_ = blocks.size() - rest;
+  continuation_block_ = continuation;
   distance_.preset(c.distance_mm, c.distance_counting);
   return true;
 }
@@ -212,6 +219,7 @@ void Channel::leave_insert_mark(double t) {
 
 void Channel::interpolate(double t) {
   const PathProgress progress = path_->interpolate(t);
+  take_stream_events();
   if (progress == PathProgress::all_blocks_run || progress == PathProgress::invalid_block) lift_->all_blocks_run();
   setpoints_ = path_->setpoints();
   if (lift_->update(*path_, hli_.override.state_r, setpoints_)) update_hold();
@@ -266,7 +274,7 @@ void Channel::start_short_cut(double t) {
 void Channel::change_direction(double t, bool standing) {
   if (!backward_.turn_due(path_->direction(), standing, ddtg_.on_short_cut(), ddtg_.pending(), events_)) return;
   if (path_->direction() == TravelDirection::forward && !path_->empty() &&
-      lift_->forbids_backward(static_cast<size_t>(&path_->front_block() - path_->blocks().data()))) {
+      lift_->forbids_backward(path_->front_index())) {
     if (!backward_refused_)
       events_.raise(events_.at_block(Severity::warning, "backward motion is not available at or after a lift range "
                                                         "(LIFT-1): the path stands until backward motion is withdrawn"));
@@ -313,9 +321,8 @@ void Channel::update_hold() {
   path_->set_velocity_factor(hold().velocity_factor(lift_->override_cap(hli_.override.state_r)));  // LIFT-8
 }
 
-void Channel::reach_block(const Block& block, bool run_commands) {
+void Channel::reach_block(const Block& block, size_t index, bool run_commands) {
   events_.set_block(block);
-  const size_t index = static_cast<size_t>(&block - path_->blocks().data());
   if (continuation_block_ && index >= *continuation_block_) continuation_reached_ = true;  // DPS-3
   if (!run_commands) return;
   lift_->reach_block(index, hli_.override.state_r);

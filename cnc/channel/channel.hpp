@@ -17,6 +17,7 @@
 //   block search (cnc/search)  DPS-3: a program start at a block number and distance
 //   reset                  abort the program where the path stands: READY again
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,7 @@
 #include "path_hold.hpp"
 #include "path_interpolator.hpp"
 #include "block_search.hpp"
+#include "program_stream.hpp"
 #include "programmed_stop.hpp"
 #include "rising_edge.hpp"
 #include "synchronous_actions.hpp"
@@ -44,7 +46,11 @@ namespace hil::cnc {
 
 class Channel : private PathObserver {
  public:
+  // The program text is read anew at each program start, line by line as
+  // the path needs its blocks (issue 17): a file (program_file) is never
+  // held whole; a string (the rig's scenarios) is held by the caller's copy.
   Channel(MachineConfig machine, std::string nc_program);
+  Channel(MachineConfig machine, ProgramText nc_program);
   Channel(const Channel&) = delete;  // the units refer to machine_
   Channel& operator=(const Channel&) = delete;
 
@@ -57,6 +63,8 @@ class Channel : private PathObserver {
   const HliState& hli() const { return hli_; }
   // Events raised since the last call.
   std::vector<Event> take_events() { return events_.take(); }
+  // The blocks it holds now (issue 17: bounded, whatever the program's length).
+  size_t blocks_held() const { return path_->blocks().held() + (program_ ? program_->blocks_held() : 0); }
   // Program end or error reached: the channel commands no more motion.
   bool finished() const;
 
@@ -88,17 +96,18 @@ class Channel : private PathObserver {
   void write_state();
 
   void start_program(const ControlUnitBlockSearch& search);
-  // DPS-3: the blocks from the continuation point on; false if the search
-  // failed (the program does not start).
-  bool search_continuation(const ControlUnitBlockSearch& search, std::vector<Block>& blocks,
-                           const std::vector<double>& start_position);
+  // DPS-3: the program goes on from the continuation point; false if the
+  // search failed (the program does not start).
+  bool search_continuation(const ControlUnitBlockSearch& search);
+  // A decode error or pre-output warning the program stream has met.
+  void take_stream_events();
   // Why the path holds now; its velocity factor goes to the interpolator.
   PathHold hold() const;
   void update_hold();
   bool moving() const { return hli_.channel_state == ChannelState::active || error_stop_.stopping(); }
 
   // PathObserver
-  void reach_block(const Block& block, bool run_commands) override;
+  void reach_block(const Block& block, size_t index, bool run_commands) override;
   void travelled(double covered_distance) override {
     distance_.count(covered_distance);
     lift_->count(covered_distance);
@@ -106,7 +115,8 @@ class Channel : private PathObserver {
   void finish_block(size_t index) override { ddtg_.finish_block(index); }
 
   MachineConfig machine_;
-  std::string nc_program_;
+  ProgramText nc_program_;
+  std::unique_ptr<ProgramStream> program_;  // the run's blocks; the interpolator reads them
   HliState hli_;
   ChannelEvents events_;
   // Per program run: made anew at a reset (they refer to machine_).

@@ -62,7 +62,7 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::forward_short_cut(PathInterpolat
                                                                   bool rapid, ChannelEvents& events) {
   // What lies between the stop and the target (non-motion blocks) runs at
   // the stop position, before the short cut (DDTG-7).
-  const std::vector<Block>& blocks = path.blocks();
+  const BlockWindow& blocks = path.blocks();
   BlockCursors& cursors = path.cursors();
   const uint32_t mask = activation_;
   const ShortCutTarget found = short_cut_target(blocks, stop.block, mask);
@@ -76,7 +76,8 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::forward_short_cut(PathInterpolat
     refused.nc_line = command.nc_line;
     refused.block_nr = command.block_nr;
     events.raise(refused);
-    cursors.next_to_look_ahead = cursors.next_to_run = blocks.size();
+    path.close_program();
+    cursors.next_to_look_ahead = cursors.next_to_run = past_program_end;
     return Outcome::aborted;
   }
   if (found.channel_initialisation) {  // DDTG-8: the short cut ends before it
@@ -89,13 +90,19 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::forward_short_cut(PathInterpolat
     events.raise(ended);
   }
   if (!found.target) {  // DDTG-6: no motion block left to short-cut to
+    // The program is streamed: the search reads ahead so far at most (issue 17).
+    const std::string limit =
+        " within the next " + std::to_string(short_cut_search_blocks) + " blocks (how far the search reads ahead)";
     Event none = events.at_block(
-        Severity::warning, mask == 0 ? "delete distance to go: no further motion block; motion ends at the stop position"
+        Severity::warning, mask == 0 ? "delete distance to go: no further motion block" +
+                                           (found.search_limit ? limit : std::string()) +
+                                           "; motion ends at the stop position"
                                      : "delete distance to go: no #DEL DIST2GO end marker valid for activation " +
-                                           std::to_string(mask) + " before program end; motion ends at the stop position");
+                                           std::to_string(mask) + (found.search_limit ? limit : " before program end") +
+                                           "; motion ends at the stop position");
     none.id = 50810;
     events.raise(none);
-    cursors.next_to_look_ahead = blocks.size();
+    cursors.next_to_look_ahead = past_program_end;
     return Outcome::no_target;
   }
   cursors.next_to_look_ahead = *found.target + 1;
@@ -107,7 +114,7 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::forward_short_cut(PathInterpolat
 // short cut goes to its start point, and backward motion goes on from there.
 DeleteDistanceToGo::Outcome DeleteDistanceToGo::backward_short_cut(PathInterpolator& path, const StopPoint& stop,
                                                                    bool rapid, ChannelEvents& events) {
-  const std::vector<Block>& blocks = path.blocks();
+  const BlockWindow& blocks = path.blocks();
   BlockCursors& cursors = path.cursors();
   size_t target = stop.block;
   while (target > cursors.lowest_stored && !blocks[--target].has_motion) {
@@ -129,7 +136,7 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::backward_short_cut(PathInterpola
 
 void DeleteDistanceToGo::push(PathInterpolator& path, const StopPoint& stop, size_t target,
                               const std::vector<double>& end, bool rapid) {
-  const std::vector<Block>& blocks = path.blocks();
+  const BlockWindow& blocks = path.blocks();
   Motion cut;
   // DDTG-2: linear, at the target block's feed (the F in force there, for a
   // G00 block too), G00 if the interrupted block was; with no F programmed

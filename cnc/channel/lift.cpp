@@ -9,8 +9,8 @@
 
 namespace hil::cnc {
 
-void Lift::prepare(std::vector<Block>& blocks, const std::vector<double>& start_position) {
-  ranges_ = prepare_lift_ranges(blocks, machine_, start_position);
+void Lift::begin_program() {
+  ranges_.clear();
   covered_ = 0;
   last_reached_ = 0;
   blocks_run_ = false;
@@ -138,7 +138,7 @@ bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vec
     // at the highest velocity programmed from the front block on, at the
     // override the lift accepts (LIFT-8).
     const double rest = std::max(g.length - since_start_covered(path), 0.0);
-    const size_t front = path.empty() ? g.end : static_cast<size_t>(&path.front_block() - path.blocks().data());
+    const size_t front = path.empty() ? g.end : path.front_index();
     const double v_programmed = g.v_ahead[std::min(front < g.start ? 0 : front - g.start, g.v_ahead.size() - 1)];
     const int32_t effective = std::min(override_value, cap_);
     const bool was_lowering = advanced_->lowering();

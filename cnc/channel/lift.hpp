@@ -26,9 +26,11 @@ class Lift {
  public:
   explicit Lift(const MachineConfig& machine) : machine_(machine) {}
 
-  // At program start, before the path gets the blocks: finds the ranges,
-  // caps the path in them.
-  void prepare(std::vector<Block>& blocks, const std::vector<double>& start_position);
+  // At program start: no range known yet.
+  void begin_program();
+  // A range the program's preparation found (LiftPreparation), before the
+  // path reaches its blocks; ranges come in program order.
+  void add_range(LiftRange range) { ranges_.push_back(std::move(range)); }
   // The path's covered distance as the interpolator reports it (DPS-1 scale, signed).
   void count(double covered) { covered_ += covered; }
   // The path reached block `index` for the first time.

@@ -26,7 +26,7 @@ void PathInterpolator::refill() {
   else refill_forward();
   const bool exhausted = direction_ == TravelDirection::backward
                              ? cursors_.next_backward <= cursors_.lowest_stored
-                             : cursors_.next_to_look_ahead >= blocks_.size() || cursors_.next_to_look_ahead == invalid_block_;
+                             : !blocks_.has(cursors_.next_to_look_ahead) || cursors_.next_to_look_ahead == invalid_block_;
   if (exhausted) place_stop_at_end();
 }
 
@@ -243,13 +243,13 @@ void PathInterpolator::restart_here(double t) {
 
 void PathInterpolator::refill_forward() {
   size_t& next = cursors_.next_to_look_ahead;
-  for (; !look_ahead_.full() && next < blocks_.size() && next != invalid_block_; ++next) {
+  for (; !look_ahead_.full() && next != invalid_block_ && blocks_.has(next); ++next) {
     const Block& block = blocks_[next];
     if (!block.has_motion) continue;
     // M functions, a dwell or a channel initialisation on its line or since
     // the last motion block: the path stands still where it starts.
     bool stop_before = false;
-    for (size_t i = next + 1; i-- > 0;) {
+    for (size_t i = next + 1; i-- > blocks_.first_kept();) {
       if (i < next && blocks_[i].has_motion) break;
       stop_before = stop_before || blocks_[i].stops_path();
     }
@@ -262,7 +262,7 @@ void PathInterpolator::refill_forward() {
     }
     push(whole_block(next), stop_before);
   }
-  if (next >= blocks_.size()) look_ahead_.flush();
+  if (!blocks_.has(next)) look_ahead_.flush();
 }
 
 void PathInterpolator::refill_backward() {

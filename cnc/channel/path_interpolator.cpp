@@ -89,7 +89,7 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   const bool backward = direction_ == TravelDirection::backward;
   if (backward) {
     size_t i = cursors_.begun, counted = 0;
-    while (i > 0 && counted < stored_blocks)
+    while (i > blocks_.first_kept() && counted < stored_blocks)
       if (blocks_[--i].has_motion) ++counted;
     cursors_.lowest_stored = i;
   }
@@ -113,7 +113,7 @@ void PathInterpolator::begin_front(const MotionState& state, double t0) {
   const bool first_time = direction_ == TravelDirection::forward && index >= cursors_.begun;
   // Once per motion, at its first piece (contoured blocks are several, KRN-6).
   if (look_ahead_.front().begins_block)
-    observer_.reach_block(blocks_[index], first_time);  // its M functions go out before its motion (MVS_SVS)
+    observer_.reach_block(blocks_[index], index, first_time);  // its M functions go out before its motion (MVS_SVS)
   if (first_time) cursors_.begun = index + 1;
   plan(state, t0);
 }
@@ -177,7 +177,11 @@ std::vector<Motion> PathInterpolator::path_ahead() const {
     for (size_t i = cursors_.next_backward; i-- > cursors_.lowest_stored;)
       if (blocks_[i].has_motion) ahead.push_back(reversed(blocks_[i].motion));
   } else {
-    for (size_t i = cursors_.next_to_look_ahead; i < blocks_.size() && i != invalid_block_; ++i)
+    // As far as the program is read, and at most path_ahead_blocks further.
+    const size_t first = cursors_.next_to_look_ahead;
+    for (size_t i = first; i != invalid_block_ && (i < blocks_.read_end() || i - first < path_ahead_blocks) &&
+                           blocks_.has(i);
+         ++i)
       if (blocks_[i].has_motion) ahead.push_back(blocks_[i].motion);
   }
   return ahead;
@@ -229,11 +233,32 @@ void PathInterpolator::finish_front() {
   cursors_.last_finished = front.block_index;
   look_ahead_.pop_front();
   refill();
+  forget_history();
 }
 
 // #DISTANCE PROG START and M30 act when the interpolator reaches them.
 void PathInterpolator::run_blocks_without_motion(size_t up_to) {
-  for (; cursors_.next_to_run < up_to; ++cursors_.next_to_run) observer_.reach_block(blocks_[cursors_.next_to_run], true);
+  for (; cursors_.next_to_run < up_to && blocks_.has(cursors_.next_to_run); ++cursors_.next_to_run) {
+    observer_.reach_block(blocks_[cursors_.next_to_run], cursors_.next_to_run, true);
+    // To the program's end (nothing moves any more, no turn): what ran is not needed.
+    if (up_to == past_program_end) blocks_.forget_before(cursors_.next_to_run);
+  }
+}
+
+void PathInterpolator::forget_history() {
+  if (stored_blocks_ == past_program_end) return;  // load(vector): all kept
+  const size_t begun = std::min(cursors_.begun, blocks_.read_end());
+  for (; history_counted_ < begun; ++history_counted_)
+    if (history_counted_ >= blocks_.first_kept() && blocks_[history_counted_].has_motion) ++history_motion_;
+  while (history_motion_ > stored_blocks_ && history_start_ < history_counted_) {
+    if (history_start_ >= blocks_.first_kept() && blocks_[history_start_].has_motion) --history_motion_;
+    ++history_start_;
+  }
+  size_t keep = std::min({history_start_, cursors_.next_to_run, cursors_.last_finished, cursors_.next_to_look_ahead});
+  if (direction_ == TravelDirection::backward) keep = std::min({keep, cursors_.lowest_stored, cursors_.next_backward});
+  if (!pushed_.empty()) keep = std::min(keep, pushed_.front().block);
+  if (!look_ahead_.empty()) keep = std::min(keep, look_ahead_.front().block_index);
+  blocks_.forget_before(keep);
 }
 
 PathProgress PathInterpolator::interpolate(double t) {
@@ -300,7 +325,7 @@ PathProgress PathInterpolator::interpolate(double t) {
       return PathProgress::invalid_block;
     }
     // Every block decoded correctly has run.
-    run_blocks_without_motion(blocks_.size());
+    run_blocks_without_motion(past_program_end);
     return PathProgress::all_blocks_run;
   }
   if (since_plan_start(t) >= plan_.duration()) path.v = path.a = 0;  // held short of the block end
@@ -309,8 +334,9 @@ PathProgress PathInterpolator::interpolate(double t) {
   look_ahead_.clear();
   pushed_.clear();
   front_done_ = 0;
-  cursors_.next_to_look_ahead = cursors_.next_to_run = cursors_.next_backward = blocks_.size();
-  cursors_.lowest_stored = blocks_.size();
+  blocks_.close();
+  cursors_.next_to_look_ahead = cursors_.next_to_run = cursors_.next_backward = past_program_end;
+  cursors_.lowest_stored = past_program_end;
   for (AxisSetpoint& setpoint : setpoints_) setpoint.velocity = setpoint.acceleration = 0;
   path_velocity_ = path_acceleration_ = 0;
   return PathProgress::setpoint_not_finite;

@@ -13,6 +13,8 @@
 
 #include "block.hpp"
 #include "block_cursors.hpp"
+#include "block_source.hpp"
+#include "block_window.hpp"
 #include "look_ahead.hpp"
 #include "machine_config.hpp"
 #include "motion_profile.hpp"
@@ -31,9 +33,10 @@ enum class TravelDirection { forward, backward };
 class PathObserver {
  public:
   // The interpolator reached `block`: one without motion, or a motion block
-  // now in front. run_commands: its commands (M functions, dwell, #DISTANCE
-  // PROG START) run now; they run once, and never backward.
-  virtual void reach_block(const Block& block, bool run_commands) = 0;
+  // now in front; `index` is its place in the program. run_commands: its
+  // commands (M functions, dwell, #DISTANCE PROG START) run now; they run
+  // once, and never backward.
+  virtual void reach_block(const Block& block, size_t index, bool run_commands) = 0;
   // The path left a block, or part of it: what that adds to the distance
   // from program start, signed by the direction (DPS-1).
   virtual void travelled(double covered_distance) = 0;
@@ -76,8 +79,21 @@ class PathInterpolator {
   PathInterpolator(const PathInterpolator&) = delete;  // the look-ahead refers to the machine
   PathInterpolator& operator=(const PathInterpolator&) = delete;
 
-  void load(std::vector<Block> blocks) { blocks_ = std::move(blocks); }
-  const std::vector<Block>& blocks() const { return blocks_; }
+  // The program's blocks, read from `source` as the look-ahead needs them
+  // (issue 17); `stored_blocks`: the motion blocks P-STUP-00033 keeps
+  // behind the furthest one begun, for backward motion (KRN-5).
+  void load(BlockSource& source, size_t stored_blocks) {
+    blocks_ = BlockWindow(source);
+    stored_blocks_ = stored_blocks;
+  }
+  // All at once (tests), all kept.
+  void load(std::vector<Block> blocks) {
+    blocks_ = BlockWindow(std::move(blocks));
+    stored_blocks_ = past_program_end;
+  }
+  const BlockWindow& blocks() const { return blocks_; }
+  // Nothing more is read from the program: it ends after the blocks read.
+  void close_program() { blocks_.close(); }
   BlockCursors& cursors() { return cursors_; }
   TravelDirection direction() const { return direction_; }
   double direction_sign() const { return direction_ == TravelDirection::backward ? -1.0 : 1.0; }
@@ -85,6 +101,7 @@ class PathInterpolator {
   // Where the path stands.
   bool empty() const { return look_ahead_.empty(); }
   const Block& front_block() const { return blocks_[look_ahead_.front().block_index]; }
+  size_t front_index() const { return look_ahead_.front().block_index; }
   // Nothing left to move, or the plan ended (held short of a block end).
   bool standing(double t) const { return look_ahead_.empty() || since_plan_start(t) >= plan_.duration(); }
   const std::vector<AxisSetpoint>& setpoints() const { return setpoints_; }
@@ -136,8 +153,11 @@ class PathInterpolator {
   }
   // The motions from where the path stands on, in the travel direction: the
   // rest of the front block, the look-ahead, the blocks after it (POSITION
-  // mode searches them, ISC-4).
+  // mode searches them, ISC-4): the blocks read so far, reading on at most
+  // path_ahead_blocks blocks after the look-ahead (issue 17: a program is
+  // streamed; a mark further on is not found, as if past the program end).
   std::vector<Motion> path_ahead() const;
+  static constexpr size_t path_ahead_blocks = 100000;
   // The path stands at the stop asked for.
   bool at_stop(double t) const;
   // Where the stop lies once the look-ahead has reached it, and how much of
@@ -216,6 +236,9 @@ class PathInterpolator {
   void plan(const MotionState& state, double t0);
   void finish_front();
   void run_blocks_without_motion(size_t up_to);
+  // Drops the blocks nothing needs any more: below the look-ahead, the
+  // blocks still to run and the stored contour (issue 17).
+  void forget_history();
   // Seconds since the plan started, at the cycle time t = k T. Counted in
   // cycles: k is exact, while k T - k0 T carries the rounding of both, a
   // jitter that grows with the run (KRN-3: 2e-6 of the jerk limit, 40,000.08
@@ -229,7 +252,11 @@ class PathInterpolator {
 
   const MachineConfig& machine_;
   PathObserver& observer_;
-  std::vector<Block> blocks_;  // the decoded program
+  BlockWindow blocks_;  // the program, as far as read and not forgotten
+  size_t stored_blocks_ = past_program_end;
+  // The stored contour's first block: stored_blocks_ motion blocks below
+  // cursors_.begun (history_motion_ of them counted in [history_start_, history_counted_)).
+  size_t history_start_ = 0, history_counted_ = 0, history_motion_ = 0;
   BlockCursors cursors_;
   TravelDirection direction_ = TravelDirection::forward;
   LookAhead look_ahead_;

@@ -2,7 +2,7 @@
 
 namespace hil::cnc {
 
-ShortCutTarget short_cut_target(const std::vector<Block>& blocks, size_t interrupted, uint32_t activation) {
+ShortCutTarget short_cut_target(const BlockWindow& blocks, size_t interrupted, uint32_t activation) {
   ShortCutTarget result;
   // The last motion block before block i, the interrupted one at least.
   auto motion_before = [&](size_t i) {
@@ -10,7 +10,11 @@ ShortCutTarget short_cut_target(const std::vector<Block>& blocks, size_t interru
     }
     return i;
   };
-  for (size_t i = interrupted + 1; i < blocks.size(); ++i) {
+  for (size_t i = interrupted + 1; blocks.has(i); ++i) {
+    if (i - interrupted > short_cut_search_blocks) {
+      result.search_limit = true;
+      return result;
+    }
     const Block& block = blocks[i];
     switch (block.short_cut_restriction) {
       case ShortCutRestriction::not_skippable: result.not_skippable = i; return result;
@@ -24,7 +28,7 @@ ShortCutTarget short_cut_target(const std::vector<Block>& blocks, size_t interru
       // The whole programmed block: its parts split for pre-output M
       // functions (those go out at the interruption point, DDTG-7 case C).
       result.target = i;
-      for (size_t k = i + 1; k < blocks.size() && (!blocks[k].has_motion || blocks[k].continues_block); ++k)
+      for (size_t k = i + 1; blocks.has(k) && (!blocks[k].has_motion || blocks[k].continues_block); ++k)
         if (blocks[k].has_motion) result.target = k;
       return result;
     }
@@ -34,6 +38,10 @@ ShortCutTarget short_cut_target(const std::vector<Block>& blocks, size_t interru
     }
   }
   return result;
+}
+
+ShortCutTarget short_cut_target(const std::vector<Block>& blocks, size_t interrupted, uint32_t activation) {
+  return short_cut_target(BlockWindow(blocks), interrupted, activation);
 }
 
 }  // namespace hil::cnc

@@ -15,6 +15,9 @@
 // the ranges of value_ranges.hpp (1 km, F, N, G, M, P, ...) is an error
 // too, and so is a control character in a line: every number of a block
 // is finite and in range.
+//
+// decode_program decodes a whole program at once (tests, tools); the
+// channel streams it (program_decoder.hpp): same blocks, same error.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -35,8 +38,8 @@ struct DecodedProgram {
 // Start positions out of range are an error with nc_line 0.
 DecodedProgram decode_program(const std::string& text, const MachineConfig& machine,
                               const std::vector<double>& start);
-// The same, an error once more than `max_lines_read` lines are read ($FOR
-// loops; 10,000,000 above): for tests.
+// The same, an error once more than `max_lines_read` lines are read again
+// by $FOR loops (10,000,000 above): for tests.
 DecodedProgram decode_program(const std::string& text, const MachineConfig& machine, const std::vector<double>& start,
                               int64_t max_lines_read);
 

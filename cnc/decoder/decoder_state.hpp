@@ -2,7 +2,9 @@
 // What decoding carries from one NC line to the next (KRN-1): modal G
 // codes, F and #SLOPE, the position reached, P parameters, M function
 // pre-output paths, G92 offsets, the active #CS and the open lift range.
+#include <array>
 #include <map>
+#include <string>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -39,7 +41,20 @@ struct DecoderState {
       : machine(machine_config),
         position(std::move(start)),
         pre_output_mm(machine.m_pre_output_mm),
-        offset(position.size(), 0.0) {}
+        offset(position.size(), 0.0) {
+    for (size_t a = 0; a < machine.axes.size(); ++a)
+      if (machine.axes[a].name.size() == 1) {
+        const char c = machine.axes[a].name[0];
+        if (c >= 'A' && c <= 'Z' && axis_by_letter[c - 'A'] < 0) axis_by_letter[c - 'A'] = static_cast<int>(a);
+      }
+  }
+
+  // The machine axis an address letter (upper case) names, -1 if none: a
+  // table, as every axis word asks it.
+  int axis_of_letter(char letter) const {
+    if (letter >= 'A' && letter <= 'Z') return axis_by_letter[letter - 'A'];
+    return machine.axis_index(std::string(1, letter));
+  }
 
   const MachineConfig& machine;
   std::vector<double> position;        // machine coordinates
@@ -49,6 +64,11 @@ struct DecoderState {
   std::optional<CoordinateSystem> cs;  // #CS ON
   ModalState modal;
   std::optional<LiftRange> lift;
+  std::array<int, 26> axis_by_letter = [] {
+    std::array<int, 26> table{};
+    table.fill(-1);
+    return table;
+  }();
 
   // The V.G. variables an expression of this line reads.
   VariableValues variables() const { return {{"V.G.LIFT_ACTIVE", lift ? 1.0 : 0.0}}; }

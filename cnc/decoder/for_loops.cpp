@@ -19,7 +19,7 @@ enum class LoopKeyword { none, for_loop, endfor };
 LoopKeyword loop_keyword(std::string_view line, std::string& code, LineCursor& after) {
   if (line.find('$') == std::string_view::npos) return LoopKeyword::none;  // plain blocks spare the work
   try {
-    code = strip_comments(std::string(line));
+    code = strip_comments(line);
   } catch (const LineError&) {
     return LoopKeyword::none;
   }
@@ -31,11 +31,14 @@ LoopKeyword loop_keyword(std::string_view line, std::string& code, LineCursor& a
 }
 
 // The line after the $ENDFOR that closes the $FOR at `line`, or none.
-std::optional<size_t> after_endfor(const std::vector<std::string_view>& lines, size_t line) {
+std::optional<size_t> after_endfor(LineStore& lines, size_t line) {
   int depth = 0;
   std::string code;
   LineCursor cursor{std::string_view()};
-  for (size_t i = line; i < lines.size(); ++i) {
+  for (size_t i = line; lines.has(i); ++i) {
+    if (i - line > ForLoops::max_body_lines)
+      throw LineError{"$FOR without $ENDFOR within " + std::to_string(ForLoops::max_body_lines) +
+                      " lines (a loop's body is held while it runs)"};
     const LoopKeyword keyword = loop_keyword(lines[i], code, cursor);
     if (keyword == LoopKeyword::for_loop) ++depth;
     if (keyword == LoopKeyword::endfor && --depth == 0) return i + 1;
@@ -62,8 +65,7 @@ constexpr size_t max_depth = 100;
 
 }  // namespace
 
-std::optional<size_t> ForLoops::control_flow(const std::vector<std::string_view>& lines, size_t i,
-                                             ParameterValues& parameters) {
+std::optional<size_t> ForLoops::control_flow(LineStore& lines, size_t i, ParameterValues& parameters) {
   std::string code;
   LineCursor after{std::string_view()};
   switch (loop_keyword(lines[i], code, after)) {
@@ -76,8 +78,7 @@ std::optional<size_t> ForLoops::control_flow(const std::vector<std::string_view>
   return std::nullopt;
 }
 
-size_t ForLoops::begin_loop(const std::string& code, const std::vector<std::string_view>& lines, size_t i,
-                            ParameterValues& parameters) {
+size_t ForLoops::begin_loop(const std::string& code, LineStore& lines, size_t i, ParameterValues& parameters) {
   if (loops_.size() == max_depth) throw LineError{"$FOR nested deeper than " + std::to_string(max_depth) + " levels"};
   LineCursor cursor(code);
   cursor.skip_block_nr();

@@ -20,9 +20,8 @@ void decode_lift_start(int axis, const std::string& arguments, DecoderState& sta
 void decode_lift_end(int axis, const std::string& arguments, DecoderState& state, Block& block);
 void decode_lift(int axis, const std::string& arguments, DecoderState& state, Block& block);
 // #FLUSH, #FLUSH WAIT (LIFT-5): inside a range LIFT_END and LIFT_START at
-// once; outside one nothing (the rig decodes the whole program before the
-// start, there is no channel to flush). #FLUSH WAIT also marks its block
-// as not searchable (DPS-3, nc_commands.cpp).
+// once; outside one nothing (no block: nothing waits to be flushed).
+// #FLUSH WAIT also marks its block as not searchable (DPS-3, nc_commands.cpp).
 void decode_flush(const std::string& arguments, DecoderState& state, Block& block);
 // #ROTATION, #TRAFO: not in this rig; inside a range error 120606 (LIFT-6).
 void refuse_rotation(const std::string& keyword, const DecoderState& state);

@@ -26,8 +26,8 @@ struct BlockWords {
   std::optional<int> run;                   // G74 (homing) or G100 (measurement): this block only
 };
 
-int axis_of(const Word& w, const MachineConfig& machine) {
-  const int axis = machine.axis_index(std::string(1, w.letter));
+int axis_of(const Word& w, const DecoderState& state) {
+  const int axis = state.axis_of_letter(w.letter);
   if (axis < 0) throw LineError{"'" + w.text + "': " + w.letter + " is not an axis of this machine"};
   return axis;
 }
@@ -92,7 +92,7 @@ double feed_mm_s(const Word& w) {
 
 void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& programmed, Block& block) {
   if (w.is_axis_command()) {
-    decode_axis_command(w, axis_of(w, state.machine), state, block);
+    decode_axis_command(w, axis_of(w, state), state, block);
     return;
   }
   switch (w.letter) {
@@ -106,7 +106,7 @@ void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& prog
     case 'I': programmed.i = checked_length(w.value, "I"); break;
     case 'J': programmed.j = checked_length(w.value, "J"); break;
     default: {
-      const int axis = axis_of(w, state.machine);
+      const int axis = axis_of(w, state);
       if (programmed.axes[axis]) throw LineError{std::string("axis ") + w.letter + " programmed twice"};
       programmed.axes[axis] = checked_length(w.value, std::string_view(&w.letter, 1));
     }
@@ -256,7 +256,7 @@ void assign_parameter(const std::string& code, size_t equals, DecoderState& stat
 
 }  // namespace
 
-bool decode_line(const std::string& line, int64_t line_nr, int64_t lines_read, DecoderState& state,
+bool decode_line(std::string_view line, int64_t line_nr, int64_t lines_read, DecoderState& state,
                  std::vector<Block>& out) {
   const std::string code = strip_comments(line);
   const size_t first = code.find_first_not_of(" \t\r");
@@ -266,8 +266,9 @@ bool decode_line(const std::string& line, int64_t line_nr, int64_t lines_read, D
   block.block_count = lines_read;
   if (const size_t hash = code.find('#'); hash != std::string::npos) {
     decode_command_block(code, hash, state, block);
-    if (block.has_command()) out.push_back(block);
-    if (block.lift_start || block.lift_end) record_lift_block(state, out);
+    const bool lift = block.lift_start || block.lift_end;
+    if (block.has_command()) out.push_back(std::move(block));
+    if (lift) record_lift_block(state, out);
     return true;
   }
   if (const size_t dollar = code.find('$'); dollar != std::string::npos) throw unsupported_command(code, dollar);
@@ -281,9 +282,10 @@ bool decode_line(const std::string& line, int64_t line_nr, int64_t lines_read, D
   if (programmed.position_preset) preset_position(programmed, state);
   else decode_motion(programmed, state, block);
   finish_lift_block(words, programmed.axes, programmed.position_preset, state, block);
-  if (block.has_motion || block.has_command()) out.push_back(block);
-  if (block.lift_start || block.lift_end) record_lift_block(state, out);
-  return !block.program_end;
+  const bool lift = block.lift_start || block.lift_end, end = block.program_end;
+  if (block.has_motion || block.has_command()) out.push_back(std::move(block));
+  if (lift) record_lift_block(state, out);
+  return !end;
 }
 
 }  // namespace hil::cnc::decoding

@@ -32,14 +32,14 @@ std::string command_keyword(const std::string& command);
 
 // An NC line is text: a control character other than tab and CR (a NUL
 // byte, binary data) is a LineError naming it and its column.
-void check_characters(const std::string& line);
+void check_characters(std::string_view line);
 
 // `text` to quote in a message: control characters as \xNN, at most
 // `max_bytes` (then "...").
 std::string printable(std::string_view text, size_t max_bytes = 200);
 
 // `line` without its `;` and `( )` comments.
-std::string strip_comments(const std::string& line);
+std::string strip_comments(std::string_view line);
 
 std::vector<Word> split_words(const std::string& code);
 

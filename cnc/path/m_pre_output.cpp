@@ -17,7 +17,7 @@ constexpr double shortest_part_mm = 1e-5;
 // Puts `m` `distance` mm before the end of `out`'s path: between two parts
 // of the motion block there, or before the earliest block searched.
 // False if the path before it was shorter than the pre-output path.
-bool insert_pre_output(std::vector<Block>& out, const MFunction& m, const Block& owner, const MachineConfig& machine) {
+bool insert_pre_output(std::deque<Block>& out, const MFunction& m, const Block& owner, const MachineConfig& machine) {
   double distance = m.pre_output_mm;
   bool reached = false;
   size_t insert_at = out.size();
@@ -65,36 +65,73 @@ bool insert_pre_output(std::vector<Block>& out, const MFunction& m, const Block&
 
 }  // namespace
 
+void MPreOutput::add(Block block) {
+  std::vector<MFunction> stay;
+  for (const MFunction& m : block.m_functions) {
+    if (m.pre_output_mm <= 0) {
+      stay.push_back(m);
+      continue;
+    }
+    const bool reached = insert_pre_output(held_, m, block, machine_);
+    motion_held_ = static_cast<size_t>(
+        std::count_if(held_.begin(), held_.end(), [](const Block& b) { return b.has_motion; }));
+    if (reached) continue;
+    Event short_path;
+    short_path.severity = Severity::warning;
+    short_path.parameter = "P-CHAN-00070";
+    short_path.nc_line = block.nc_line;
+    short_path.block_nr = block.block_nr;
+    short_path.value = m.pre_output_mm;
+    short_path.message = "M" + std::to_string(m.nr) + ": pre-output path " + std::to_string(m.pre_output_mm) +
+                         " mm reaches past the program start or the " + std::to_string(pre_output_lookahead_blocks) +
+                         " motion blocks searched (P-CHAN-00603); output as early as they allow";
+    warnings_.push_back(short_path);
+  }
+  if (stay.size() != block.m_functions.size()) block.m_functions = std::move(stay);
+  if (!(block.has_motion || block.has_command())) return;
+  if (block.has_motion) ++motion_held_;
+  held_.push_back(std::move(block));
+}
+
+// A pre-output goes in at or after the earliest of the last 10 motion
+// blocks (insert_pre_output): what lies before it is final.
+void MPreOutput::release_final() {
+  final_ = 0;
+  size_t motion = motion_held_;
+  while (final_ < held_.size() && (motion > static_cast<size_t>(pre_output_lookahead_blocks) ||
+                                   !held_[final_].has_motion)) {
+    if (held_[final_].has_motion) --motion;
+    ++final_;
+  }
+}
+
+bool MPreOutput::next(Block& block) {
+  while (final_ == 0) {
+    Block in;
+    if (ended_ || !upstream_.next(in)) {
+      ended_ = true;
+      if (held_.empty()) return false;
+      final_ = held_.size();
+      break;
+    }
+    add(std::move(in));
+    release_final();
+  }
+  block = std::move(held_.front());
+  held_.pop_front();
+  if (block.has_motion) --motion_held_;
+  --final_;
+  return true;
+}
+
 std::vector<Block> apply_m_pre_output(std::vector<Block> blocks, const MachineConfig& machine,
                                       std::vector<Event>& warnings) {
-  const bool any = std::any_of(blocks.begin(), blocks.end(), [](const Block& b) {
-    return std::any_of(b.m_functions.begin(), b.m_functions.end(), [](const MFunction& m) { return m.pre_output_mm > 0; });
-  });
-  if (!any) return blocks;
+  QueuedBlocks all(std::deque<Block>(std::make_move_iterator(blocks.begin()), std::make_move_iterator(blocks.end())));
+  MPreOutput stage(all, machine);
   std::vector<Block> out;
-  out.reserve(blocks.size() + 16);
-  for (Block& block : blocks) {
-    std::vector<MFunction> stay;
-    for (const MFunction& m : block.m_functions) {
-      if (m.pre_output_mm <= 0) {
-        stay.push_back(m);
-      } else if (!insert_pre_output(out, m, block, machine)) {
-        Event short_path;
-        short_path.severity = Severity::warning;
-        short_path.parameter = "P-CHAN-00070";
-        short_path.nc_line = block.nc_line;
-        short_path.block_nr = block.block_nr;
-        short_path.value = m.pre_output_mm;
-        short_path.message = "M" + std::to_string(m.nr) + ": pre-output path " + std::to_string(m.pre_output_mm) +
-                             " mm reaches past the program start or the " +
-                             std::to_string(pre_output_lookahead_blocks) +
-                             " motion blocks searched (P-CHAN-00603); output as early as they allow";
-        warnings.push_back(short_path);
-      }
-    }
-    block.m_functions = std::move(stay);
-    if (block.has_motion || block.has_command()) out.push_back(std::move(block));
-  }
+  Block block;
+  while (stage.next(block)) out.push_back(std::move(block));
+  for (Event& warning : stage.take_warnings()) warnings.push_back(std::move(warning));
   return out;
 }
 

@@ -7,14 +7,44 @@
 // The search goes back at most P-CHAN-00603's default of 10 motion blocks;
 // it stops at the start of the program or there, and the M function goes
 // out at that point, with a warning appended to `warnings`.
+//
+// Streamed (issue 17): MPreOutput holds the blocks from the earliest of the
+// last 10 motion blocks on (and the blocks without motion between them),
+// the only ones a later pre-output can still split or insert into.
+#include <cstddef>
+#include <deque>
+#include <utility>
 #include <vector>
 
 #include "block.hpp"
+#include "block_source.hpp"
 #include "event.hpp"
 #include "machine_config.hpp"
 
 namespace hil::cnc {
 
+class MPreOutput : public BlockSource {
+ public:
+  MPreOutput(BlockSource& upstream, const MachineConfig& machine) : upstream_(upstream), machine_(machine) {}
+  bool next(Block& block) override;
+  // Pre-output paths that reached past what is searched, since the last call.
+  std::vector<Event> take_warnings() { return std::exchange(warnings_, {}); }
+  size_t blocks_held() const { return held_.size(); }
+
+ private:
+  void add(Block block);
+  void release_final();
+
+  BlockSource& upstream_;
+  const MachineConfig& machine_;
+  std::deque<Block> held_;
+  size_t motion_held_ = 0;  // motion blocks in held_
+  size_t final_ = 0;        // held_'s first blocks no pre-output can change any more
+  bool ended_ = false;
+  std::vector<Event> warnings_;
+};
+
+// The same over a whole program (tests).
 std::vector<Block> apply_m_pre_output(std::vector<Block> blocks, const MachineConfig& machine,
                                       std::vector<Event>& warnings);
 

@@ -72,8 +72,8 @@ struct DistanceCount {
 // block is reached: on the searched block it is still phase 1 (up to the
 // block limit). G74 / G100 end their motion by the signal: on the searched
 // block that motion is phase 2 once the continuation lies inside or after it.
-const Block* not_simulated(const std::vector<Block>& blocks, size_t searched, const Continuation& c) {
-  for (size_t k = searched; k <= c.block && k < blocks.size(); ++k) {
+const Block* not_simulated(const BlockWindow& blocks, size_t searched, const Continuation& c) {
+  for (size_t k = searched; k <= c.block && blocks.has(k); ++k) {
     const Block& block = blocks[k];
     if (block.not_searchable.empty()) continue;
     const bool passed = k < c.block || !c.at_block_start;  // the continuation lies beyond the block's start
@@ -85,7 +85,7 @@ const Block* not_simulated(const std::vector<Block>& blocks, size_t searched, co
 
 }  // namespace
 
-BlockSearchOutcome search_block(const std::vector<Block>& blocks, const BlockSearchRequest& request,
+BlockSearchOutcome search_block(BlockWindow& blocks, const BlockSearchRequest& request,
                                 const MachineConfig& machine) {
   if (request.type != 1 && request.type != 4)
     return refused(nullptr, "type " + std::to_string(request.type) +
@@ -94,19 +94,23 @@ BlockSearchOutcome search_block(const std::vector<Block>& blocks, const BlockSea
   const double distance = request.distance_mm;
   if (by_distance && !(std::isfinite(distance) && distance >= 0))
     return refused(nullptr, "distance " + mm_text(distance) + " is no distance from program start (>= 0 mm)");
-  size_t searched = 0;
-  while (searched < blocks.size() && !(request.block_nr > 0 && blocks[searched].block_nr == request.block_nr))
-    ++searched;
-  if (searched == blocks.size()) return refused(nullptr, "no block " + n_of(request.block_nr) + " in the program");
-
-  // Phase 1: up to the block limit, the searched block's start.
+  // Phase 1: up to the block limit, the searched block's start; the blocks
+  // passed are not kept (the program is streamed, issue 17).
   DistanceCount count;
   CollectedCommands collected;
-  for (size_t k = 0; k < searched; ++k) {
-    count.reach(blocks[k]);
-    if (blocks[k].has_motion && count.counting) count.mm += PathSegment(blocks[k].motion, machine).covered_distance();
-    collected.pass(blocks[k]);
+  PassedBlocks passed;
+  size_t searched = blocks.first_kept();
+  for (;; ++searched) {
+    if (!blocks.has(searched)) return refused(nullptr, "no block " + n_of(request.block_nr) + " in the program");
+    const Block& block = blocks[searched];
+    if (request.block_nr > 0 && block.block_nr == request.block_nr) break;
+    count.reach(block);
+    if (block.has_motion && count.counting) count.mm += PathSegment(block.motion, machine).covered_distance();
+    collected.pass(block);
+    passed.pass(block);
+    blocks.forget_before(searched);
   }
+  blocks.forget_before(searched);
   count.reach(blocks[searched]);
   Continuation c;
   c.block = searched;
@@ -125,7 +129,7 @@ BlockSearchOutcome search_block(const std::vector<Block>& blocks, const BlockSea
   } else if (by_distance && distance > count.mm) {
     // Phase 2: on by the distance, from the searched block's motion on.
     bool found = false;
-    for (size_t k = searched; k < blocks.size() && !found; ++k) {
+    for (size_t k = searched; blocks.has(k) && !found; ++k) {
       const Block& block = blocks[k];
       if (k > searched) count.reach(block);
       if (block.has_motion && count.counting) {
@@ -152,7 +156,9 @@ BlockSearchOutcome search_block(const std::vector<Block>& blocks, const BlockSea
       return refused(&limit, "distance " + mm_text(distance) +
                                  " lies beyond the program's end (the program counts up to " + mm_text(count.mm) + ")");
   }
-  if (c.at_block_start) c.position = position_at_start(blocks, c.block);
+  // Phase 2's blocks up to the continuation are kept: bounded by the distance searched.
+  for (size_t k = searched; k < c.block; ++k) passed.pass(blocks[k]);
+  if (c.at_block_start) c.position = passed.position_at_start(blocks, c.block);
   c.m_functions = collected.m_functions();
   c.insert_cmd = collected.insert_cmd();
 
@@ -163,10 +169,18 @@ BlockSearchOutcome search_block(const std::vector<Block>& blocks, const BlockSea
                              n_of(request.block_nr) +
                              " and the continuation point: G74, G100 and #FLUSH WAIT cannot be simulated in a "
                              "search by distance (DPS-3)")};
-  if (in_lift_range(blocks, c.block, c.at_block_start))
+  if (passed.in_lift_range(blocks, c.block, c.at_block_start))
     return {std::nullopt, search_event(Severity::error, &blocks[c.block],
                                        "block search into a lift range is not supported (LIFT-1)")};
+  c.nc_line = blocks[c.block].nc_line;
+  c.block_nr = blocks[c.block].block_nr;
   return {c, std::nullopt};
+}
+
+BlockSearchOutcome search_block(const std::vector<Block>& blocks, const BlockSearchRequest& request,
+                                const MachineConfig& machine) {
+  BlockWindow window(blocks);
+  return search_block(window, request, machine);
 }
 
 }  // namespace hil::cnc

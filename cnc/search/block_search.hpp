@@ -7,10 +7,12 @@
 // into that block or blocks after it. Knows no channel: the channel hands
 // it the blocks a program start would run, and runs what it returns.
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <vector>
 
 #include "block.hpp"
+#include "block_window.hpp"
 #include "event.hpp"
 #include "machine_config.hpp"
 
@@ -26,6 +28,7 @@ struct BlockSearchRequest {
 // Where and how the program continues.
 struct Continuation {
   size_t block = 0;  // index into the searched blocks: the block the continuation point lies in
+  int64_t nc_line = 0, block_nr = 0;  // of that block
   // On the block's motion (its start if it lies at the start); mm, machine axes.
   std::vector<double> position;
   bool at_block_start = true;   // the block runs whole, its own commands included
@@ -50,6 +53,12 @@ struct BlockSearchOutcome {
   std::optional<Event> error;
 };
 
+// Over a streamed program (issue 17): reads `blocks` from its first block
+// up to the continuation and the next motion block after it; the blocks
+// before the searched block are forgotten as they pass, those from it to
+// the continuation are kept (phase 2's distance bounds them).
+BlockSearchOutcome search_block(BlockWindow& blocks, const BlockSearchRequest& request, const MachineConfig& machine);
+// The same over a whole program (tests).
 BlockSearchOutcome search_block(const std::vector<Block>& blocks, const BlockSearchRequest& request,
                                 const MachineConfig& machine);
 
@@ -60,5 +69,12 @@ BlockSearchOutcome search_block(const std::vector<Block>& blocks, const BlockSea
 // distance from program start goes on from the continuation's.
 std::vector<Block> continued_program(const std::vector<Block>& blocks, const Continuation& continuation,
                                      const std::vector<double>& from, const MachineConfig& machine);
+// The same on the window search_block(BlockWindow&) left: the continued
+// program's first blocks, up to those read; taken out of `blocks`, which
+// reads on after them. `continuation_index`: where the continuation's
+// block (or its rest) lies in them.
+std::deque<Block> continued_start(BlockWindow& blocks, const Continuation& continuation,
+                                  const std::vector<double>& from, const MachineConfig& machine,
+                                  size_t& continuation_index);
 
 }  // namespace hil::cnc

@@ -20,8 +20,8 @@ bool moves(const std::vector<double>& from, const std::vector<double>& to) {
 
 // The motion the program goes on with there: the continuation's block's,
 // or (a block without motion) the next motion's. None: a rapid.
-const Motion* continued_motion(const std::vector<Block>& blocks, size_t k) {
-  for (size_t i = k; i < blocks.size(); ++i)
+const Motion* continued_motion(const BlockWindow& blocks, size_t k) {
+  for (size_t i = k; blocks.has(i); ++i)
     if (blocks[i].has_motion) return &blocks[i].motion;
   return nullptr;
 }
@@ -30,7 +30,7 @@ const Motion* continued_motion(const std::vector<Block>& blocks, size_t k) {
 // part first when it goes up, last when it goes down; the other axes
 // together. G00 if the program goes on with a rapid, else G01 at its feed.
 // Each leg ends at standstill.
-std::vector<Block> approach(const std::vector<Block>& blocks, const Continuation& c, const std::vector<double>& from,
+std::vector<Block> approach(const BlockWindow& blocks, const Continuation& c, const std::vector<double>& from,
                             const MachineConfig& machine) {
   std::vector<Block> legs;
   const std::vector<double>& to = c.position;
@@ -80,11 +80,14 @@ Block rest_of_block(Block block, const std::vector<double>& point, const Machine
 
 }  // namespace
 
-std::vector<Block> continued_program(const std::vector<Block>& blocks, const Continuation& continuation,
-                                     const std::vector<double>& from, const MachineConfig& machine) {
-  std::vector<Block> out;
-  if (continuation.block >= blocks.size()) return out;
-  out = approach(blocks, continuation, from, machine);
+std::deque<Block> continued_start(BlockWindow& blocks, const Continuation& continuation,
+                                  const std::vector<double>& from, const MachineConfig& machine,
+                                  size_t& continuation_index) {
+  std::deque<Block> out;
+  continuation_index = 0;
+  if (!blocks.has(continuation.block)) return out;
+  const std::vector<Block> legs = approach(blocks, continuation, from, machine);
+  out.assign(legs.begin(), legs.end());
   // The approach covers no distance (the channel presets dist_prog_start
   // to the continuation's).
   if (!out.empty()) out.front().distance_prog_start = DistanceProgStart::off;
@@ -106,8 +109,20 @@ std::vector<Block> continued_program(const std::vector<Block>& blocks, const Con
   // applies at the same moment and is already in the continuation's
   // distance and state: ON is ON, CLEAR made it 0, OFF stopped counting.
   if (continuation.distance_counting) first.distance_prog_start = DistanceProgStart::on;
+  continuation_index = out.size();
   out.push_back(first);
-  out.insert(out.end(), blocks.begin() + static_cast<std::ptrdiff_t>(continuation.block) + 1, blocks.end());
+  blocks.forget_before(continuation.block + 1);
+  for (Block& block : blocks.take_all()) out.push_back(std::move(block));
+  return out;
+}
+
+std::vector<Block> continued_program(const std::vector<Block>& blocks, const Continuation& continuation,
+                                     const std::vector<double>& from, const MachineConfig& machine) {
+  BlockWindow window(blocks);
+  size_t index = 0;
+  const std::deque<Block> start = continued_start(window, continuation, from, machine, index);
+  std::vector<Block> out(start.begin(), start.end());
+  for (size_t i = window.first_kept(); window.has(i); ++i) out.push_back(window[i]);
   return out;
 }
 

@@ -15,7 +15,7 @@ using namespace hil::cnc;
 namespace {
 
 struct NoObserver : PathObserver {
-  void reach_block(const Block&, bool) override {}
+  void reach_block(const Block&, size_t, bool) override {}
   void travelled(double) override {}
   void finish_block(size_t) override {}
 };
