@@ -61,6 +61,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--port", run.port, "udpm port of this rig (default derived from the pid)")
       ->check(CLI::Range(1024, 65535));
   run_cmd->add_option("--bin-dir", run.bin_dir, "folder of the node executables");
+  run_cmd->add_option("--cpu", run.cpu,
+                      "CPU of the lock-step processes (cnc, drives, PLC); default: the CPU hil starts on; -1: anywhere")
+      ->check(CLI::Range(-1, 4095));
   run_cmd->add_flag("--in-process", run.in_process,
                     "every node in this process, on direct calls instead of LCM: the same messages and log, "
                     "no network (for suites)");

@@ -1,6 +1,7 @@
 #include "process.hpp"
 
 #include <fcntl.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
@@ -12,7 +13,7 @@
 
 namespace hil::rig {
 
-Process::Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file)
+Process::Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file, int cpu)
     : name_(std::move(name)) {
   const int fd = ::open(output_file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (fd < 0) throw std::runtime_error("cannot write " + output_file + ": " + std::strerror(errno));
@@ -29,6 +30,12 @@ Process::Process(std::string name, const std::vector<std::string>& argv, const s
     // A node never outlives the rig that started it.
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (::getppid() != parent) ::_exit(127);
+    if (cpu >= 0) {
+      cpu_set_t one;
+      CPU_ZERO(&one);
+      CPU_SET(cpu, &one);
+      ::sched_setaffinity(0, sizeof one, &one);  // refused: it runs where the system puts it
+    }
     ::dup2(fd, STDOUT_FILENO);
     ::dup2(fd, STDERR_FILENO);
     ::execvp(args[0], args.data());  // a bare name is looked up on PATH

@@ -11,8 +11,10 @@ namespace hil::rig {
 
 class Process {
  public:
-  // Starts argv[0] (a path, or a name on PATH) with its stdout and stderr appended to output_file.
-  Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file);
+  // Starts argv[0] (a path, or a name on PATH) with its stdout and stderr
+  // appended to output_file; on CPU `cpu` only if cpu >= 0 (and the system
+  // lets it).
+  Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file, int cpu = -1);
   Process(const Process&) = delete;
   Process& operator=(const Process&) = delete;
   ~Process();

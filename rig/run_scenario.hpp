@@ -12,6 +12,7 @@ struct RunOptions {
   std::string bin_dir;       // where cnc, axis_sim, plc_sim, hil_logger are
   bool quiet = false;        // summary line only
   bool in_process = false;   // every node in this process on the in-process bus (in_process_run.hpp)
+  int cpu = -2;              // the CPU of the lock-step nodes: -2 the one hil starts on, -1 anywhere
 };
 
 struct RunResult {
