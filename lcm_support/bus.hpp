@@ -15,6 +15,14 @@
 
 namespace hil::lcm_support {
 
+// An LCM message's bytes, as LCM sends them.
+template <typename Message>
+std::vector<uint8_t> encode(const Message& message) {
+  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
+  message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  return bytes;
+}
+
 class Bus {
  public:
   // The message and the channel it came on; rbuf.recv_utime is the wall
@@ -33,8 +41,7 @@ class Bus {
 
   template <typename Message>
   void publish(const std::string& channel, const Message& message) {
-    std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
-    message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+    const std::vector<uint8_t> bytes = encode(message);
     publish(channel, bytes.data(), static_cast<uint32_t>(bytes.size()));
   }
 };

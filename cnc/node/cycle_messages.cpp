@@ -2,6 +2,7 @@
 
 #include <hil/axis_setpoint_t.hpp>
 
+#include "bus.hpp"
 #include "channels.hpp"
 #include "messages.hpp"
 
@@ -10,9 +11,7 @@ namespace {
 
 template <typename T>
 EncodedMessage encoded(const std::string& channel, const T& message) {
-  EncodedMessage out{channel, std::vector<uint8_t>(message.getEncodedSize())};
-  message.encode(out.bytes.data(), 0, static_cast<int>(out.bytes.size()));
-  return out;
+  return {channel, lcm_support::encode(message)};
 }
 
 }  // namespace

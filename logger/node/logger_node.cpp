@@ -152,8 +152,7 @@ void LoggerNode::write_scenario(const hil::run_manifest_t& manifest, int64_t rec
 
 template <typename Message>
 void LoggerNode::write(const std::string& channel, const Message& m, int64_t utime) {
-  std::vector<uint8_t> bytes(m.getEncodedSize());
-  m.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  const std::vector<uint8_t> bytes = lcm_support::encode(m);
   write_raw(channel, bytes.data(), static_cast<uint32_t>(bytes.size()), utime);
 }
 
