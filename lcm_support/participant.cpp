@@ -16,6 +16,7 @@ Participant::Participant(Inbox& inbox, std::string name) : inbox_(inbox), name_(
     return true;
   });
   inbox_.on<hil::participant_t>(channels::participant, [this](const hil::participant_t& m, const lcm::ReceiveBuffer&) {
+    if (m.name == "cnc" && m.phase == hil::participant_t::PHASE_READY) cnc_up_ = true;
     if (m.name == "cnc" && m.phase == hil::participant_t::PHASE_RUN_END) {
       ended_ = true;
       end_cycle_ = m.cycle;
@@ -57,7 +58,8 @@ bool Participant::wait_for_start(std::chrono::milliseconds timeout) {
     if (now > give_up) return false;
     // On a timer, not per message received: answering every READY with a
     // READY would flood the bus.
-    if (now >= next_announce) {
+    if (now >= next_announce || cnc_up_) {
+      cnc_up_ = false;
       announce_ready();
       next_announce = now + std::chrono::milliseconds(50);
     }

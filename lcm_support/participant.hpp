@@ -1,7 +1,8 @@
 #pragma once
 // The lock-step handshake every node but the CNC takes part in (RIG-6):
-// announce READY until this run's manifest shows it has begun; leave when
-// this run's CNC announces its end. Announcements and manifests of other
+// announce READY until this run's manifest shows it has begun (at once
+// again when the CNC announces that it is up: it may have missed the
+// first); leave when this run's CNC announces its end. Announcements and manifests of other
 // runs are refused (counted in the inbox's ledger).
 #include <hil/run_manifest_t.hpp>
 
@@ -41,6 +42,7 @@ class Participant {
   Inbox& inbox_;
   std::string name_;
   bool started_ = false;
+  bool cnc_up_ = false;  // the CNC announced READY: announce again now
   bool ended_ = false;
   int64_t end_cycle_ = 0;
   hil::run_manifest_t manifest_;

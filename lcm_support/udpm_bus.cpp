@@ -25,6 +25,7 @@ namespace {
 constexpr uint32_t lcm_short = 0x4c433032;  // "LC02": one datagram
 constexpr uint32_t lcm_long = 0x4c433033;   // "LC03": a fragment
 constexpr size_t short_header = 8, long_header = 20, max_channel = 63;
+constexpr size_t lcm_short_max_payload = 65499;  // name, NUL and data (LCM_SHORT_MESSAGE_MAX_SIZE)
 constexpr uint32_t udp_header = 8;  // a UDP socket's filter sees the UDP header first
 
 uint32_t be32(const uint8_t* p) { return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3]; }
@@ -34,7 +35,18 @@ struct Group {
   in_addr address{};
   int port = 0;
   int recv_buf_size = 0;
+  int ttl = 0;  // LCM's default: the datagrams stay on this machine
 };
+
+int url_option(const std::string& options, const std::string& name, int otherwise) {
+  const std::string key = name + "=";
+  for (size_t at = 0; at < options.size();) {
+    const size_t end = std::min(options.find('&', at), options.size());
+    if (options.compare(at, key.size(), key) == 0) return std::atoi(options.c_str() + at + key.size());
+    at = end + 1;
+  }
+  return otherwise;
+}
 
 Group parse_url(const std::string& url) {
   const std::string scheme = "udpm://";
@@ -53,9 +65,8 @@ Group parse_url(const std::string& url) {
   }
   if (query != std::string::npos) {
     const std::string options = rest.substr(query + 1);
-    const std::string key = "recv_buf_size=";
-    const size_t at = options.find(key);
-    if (at != std::string::npos) g.recv_buf_size = std::atoi(options.c_str() + at + key.size());
+    g.recv_buf_size = url_option(options, "recv_buf_size", 0);
+    g.ttl = url_option(options, "ttl", 0);
   }
   return g;
 }
@@ -66,7 +77,8 @@ class UdpmBus : public Bus {
     if (!sender_.good()) throw std::runtime_error("cannot open LCM on " + url);
     if (receive_.batch.count() > 0) prctl(PR_SET_TIMERSLACK, 1000UL);  // 1 us: the pause as asked, not 50 us later
     const Group group = parse_url(url);
-    fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    open_sender(group);
+    fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
     if (fd_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
     const int one = 1;
     setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);  // as LCM's own receivers on the port
@@ -88,10 +100,32 @@ class UdpmBus : public Bus {
                                " (no multicast route? see README: scripts/in_netns.sh)");
     }
   }
-  ~UdpmBus() override { close(fd_); }
+  ~UdpmBus() override {
+    try {
+      flush();
+    } catch (const std::exception&) {  // a node that ends cannot do more about it
+    }
+    close(fd_);
+    close(send_fd_);
+  }
 
+  // Held until the node next waits (handle_timeout), then sent together in
+  // one system call: the receivers woken by a cycle's messages then run
+  // after the sender has sent them all, not one by one in between.
   void publish(const std::string& channel, const void* data, uint32_t size) override {
-    if (sender_.publish(channel, data, size) != 0) throw std::runtime_error("LCM publish on " + channel + " failed");
+    const size_t datagram = short_header + channel.size() + 1 + size;
+    if (channel.size() > max_channel || channel.size() + 1 + size > lcm_short_max_payload) {
+      flush();  // in order; LCM itself fragments a long message (and refuses a long name)
+      if (sender_.publish(channel, data, size) != 0) throw std::runtime_error("LCM publish on " + channel + " failed");
+      return;
+    }
+    if (queued_ == outgoing_.size()) outgoing_.emplace_back();
+    std::vector<uint8_t>& d = outgoing_[queued_++];
+    d.resize(datagram);
+    const uint32_t header[2] = {htonl(lcm_short), htonl(seqno_++)};
+    std::memcpy(d.data(), header, short_header);
+    std::memcpy(d.data() + short_header, channel.c_str(), channel.size() + 1);
+    if (size > 0) std::memcpy(d.data() + short_header + channel.size() + 1, data, size);
   }
 
   int subscribe(const std::string& channel, Handler handler, int) override {
@@ -106,13 +140,14 @@ class UdpmBus : public Bus {
   }
 
   int handle_timeout(int timeout_ms) override {
+    flush();
     if (pending_.empty()) {
-      if (receive_.batch.count() > 0)
+      if (receive_.batch.count() > 0) {
         std::this_thread::sleep_for(std::min<std::chrono::microseconds>(receive_.batch, std::chrono::milliseconds(timeout_ms)));
-      pollfd p{fd_, POLLIN, 0};
-      const int ready = poll(&p, 1, receive_.batch.count() > 0 ? 0 : timeout_ms);
-      if (ready < 0) return errno == EINTR ? 0 : -1;
-      if (ready > 0 && read_available() < 0) return -1;
+        if (read_available(0) < 0) return -1;
+      } else if (read_available(timeout_ms) < 0) {
+        return -1;
+      }
     }
     if (pending_.empty()) return 0;
     Message m = std::move(pending_.front());
@@ -136,6 +171,41 @@ class UdpmBus : public Bus {
     uint16_t remaining = 0;
   };
 
+  void open_sender(const Group& group) {
+    send_fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+    if (send_fd_ < 0) throw std::runtime_error(std::string("socket: ") + std::strerror(errno));
+    const unsigned char ttl = static_cast<unsigned char>(group.ttl), loop = 1;
+    if (setsockopt(send_fd_, IPPROTO_IP, IP_MULTICAST_TTL, &ttl, sizeof ttl) != 0 ||
+        setsockopt(send_fd_, IPPROTO_IP, IP_MULTICAST_LOOP, &loop, sizeof loop) != 0)
+      throw std::runtime_error(std::string("multicast options: ") + std::strerror(errno));
+    destination_.sin_family = AF_INET;
+    destination_.sin_addr = group.address;
+    destination_.sin_port = htons(static_cast<uint16_t>(group.port));
+  }
+
+  void flush() {
+    if (queued_ == 0) return;
+    std::vector<mmsghdr> headers(queued_);
+    std::vector<iovec> io(queued_);
+    for (size_t i = 0; i < queued_; ++i) {
+      io[i] = {outgoing_[i].data(), outgoing_[i].size()};
+      headers[i].msg_hdr.msg_iov = &io[i];
+      headers[i].msg_hdr.msg_iovlen = 1;
+      headers[i].msg_hdr.msg_name = &destination_;
+      headers[i].msg_hdr.msg_namelen = sizeof destination_;
+    }
+    for (size_t sent = 0; sent < queued_;) {
+      const int n = sendmmsg(send_fd_, headers.data() + sent, static_cast<unsigned>(queued_ - sent), 0);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        queued_ = 0;
+        throw std::runtime_error(std::string("LCM publish failed: ") + std::strerror(errno));
+      }
+      sent += static_cast<size_t>(n);
+    }
+    queued_ = 0;
+  }
+
   void refilter() {
     bool every = false;
     const std::vector<std::string> names = subscribers_.names(every);
@@ -155,8 +225,16 @@ class UdpmBus : public Bus {
       throw std::runtime_error(std::string("SO_ATTACH_FILTER: ") + std::strerror(errno));
   }
 
-  // Every datagram waiting at the socket, many per system call.
-  int read_available() {
+  // Blocks on the socket itself (no poll before: one system call less per
+  // wake-up) until one datagram is there or `timeout_ms` has passed, then
+  // reads every datagram waiting, many per system call.
+  int read_available(int timeout_ms) {
+    if (timeout_ms != receive_timeout_ms_) {
+      const timeval t{timeout_ms / 1000, (timeout_ms % 1000) * 1000};
+      if (setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &t, sizeof t) != 0) return -1;
+      receive_timeout_ms_ = timeout_ms;
+    }
+    int flags = timeout_ms > 0 ? MSG_WAITFORONE : MSG_DONTWAIT;
     constexpr unsigned batch = 32;
     if (buffers_.empty()) buffers_.assign(batch, std::vector<uint8_t>(65536));
     for (;;) {
@@ -170,8 +248,9 @@ class UdpmBus : public Bus {
         headers[i].msg_hdr.msg_name = &from[i];
         headers[i].msg_hdr.msg_namelen = sizeof from[i];
       }
-      const int n = recvmmsg(fd_, headers, batch, MSG_DONTWAIT, nullptr);
+      const int n = recvmmsg(fd_, headers, batch, flags, nullptr);
       if (n < 0) return errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR ? 0 : -1;
+      flags = MSG_DONTWAIT;
       const int64_t now = wall_clock_us();
       for (int i = 0; i < n; ++i) take(buffers_[i].data(), headers[i].msg_len, from[i], now);
       if (n < static_cast<int>(batch)) return 0;
@@ -217,6 +296,12 @@ class UdpmBus : public Bus {
   lcm::LCM sender_;
   UdpmReceive receive_;
   int fd_ = -1;
+  int send_fd_ = -1;
+  int receive_timeout_ms_ = 0;  // SO_RCVTIMEO now; 0: none
+  sockaddr_in destination_{};
+  uint32_t seqno_ = 0;
+  std::vector<std::vector<uint8_t>> outgoing_;  // [0, queued_): to send; reused
+  size_t queued_ = 0;
   Subscribers subscribers_;
   std::deque<Message> pending_;
   std::map<std::tuple<in_addr_t, in_port_t, uint32_t>, Fragments> fragments_;

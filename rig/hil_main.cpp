@@ -64,6 +64,10 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--cpu", run.cpu,
                       "CPU of the lock-step processes (cnc, drives, PLC); default: the CPU hil starts on; -1: anywhere")
       ->check(CLI::Range(-1, 4095));
+  run_cmd->add_option("--fifo-priority", run.fifo_priority,
+                      "SCHED_FIFO priority of the lock-step processes, the same for all (default 10, where the "
+                      "system allows it); 0: normal scheduling")
+      ->check(CLI::Range(0, 99));
   run_cmd->add_flag("--in-process", run.in_process,
                     "every node in this process, on direct calls instead of LCM: the same messages and log, "
                     "no network (for suites)");

@@ -13,7 +13,8 @@
 
 namespace hil::rig {
 
-Process::Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file, int cpu)
+Process::Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file,
+                 Placement placement)
     : name_(std::move(name)) {
   const int fd = ::open(output_file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (fd < 0) throw std::runtime_error("cannot write " + output_file + ": " + std::strerror(errno));
@@ -30,12 +31,15 @@ Process::Process(std::string name, const std::vector<std::string>& argv, const s
     // A node never outlives the rig that started it.
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (::getppid() != parent) ::_exit(127);
-    if (cpu >= 0) {
+    if (placement.cpu >= 0) {
       cpu_set_t one;
       CPU_ZERO(&one);
-      CPU_SET(cpu, &one);
+      CPU_SET(placement.cpu, &one);
       ::sched_setaffinity(0, sizeof one, &one);  // refused: it runs where the system puts it
     }
+    sched_param fifo{};
+    fifo.sched_priority = placement.fifo_priority;
+    if (placement.fifo_priority > 0) ::sched_setscheduler(0, SCHED_FIFO, &fifo);  // before exec: every thread inherits it
     ::dup2(fd, STDOUT_FILENO);
     ::dup2(fd, STDERR_FILENO);
     ::execvp(args[0], args.data());  // a bare name is looked up on PATH
@@ -44,6 +48,12 @@ Process::Process(std::string name, const std::vector<std::string>& argv, const s
     ::_exit(127);
   }
   ::close(fd);
+  // Again from here, so that the rig knows whether it was allowed.
+  if (placement.fifo_priority > 0) {
+    sched_param p{};
+    p.sched_priority = placement.fifo_priority;
+    if (::sched_setscheduler(pid_, SCHED_FIFO, &p) != 0) fifo_refused_ = std::strerror(errno);
+  }
 }
 
 Process::~Process() {

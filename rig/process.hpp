@@ -9,17 +9,25 @@
 
 namespace hil::rig {
 
+// Where and how a process runs, if the system lets it.
+struct Placement {
+  int cpu = -1;           // this CPU only if >= 0
+  int fifo_priority = 0;  // SCHED_FIFO at this priority if > 0
+};
+
 class Process {
  public:
   // Starts argv[0] (a path, or a name on PATH) with its stdout and stderr
-  // appended to output_file; on CPU `cpu` only if cpu >= 0 (and the system
-  // lets it).
-  Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file, int cpu = -1);
+  // appended to output_file, placed as asked where the system allows.
+  Process(std::string name, const std::vector<std::string>& argv, const std::string& output_file,
+          Placement placement = {});
   Process(const Process&) = delete;
   Process& operator=(const Process&) = delete;
   ~Process();
 
   const std::string& name() const { return name_; }
+  // Why SCHED_FIFO was refused (strerror), empty if it was applied or not asked.
+  const std::string& fifo_refused() const { return fifo_refused_; }
   // Exit status once it has exited (128 + signal if killed), else nullopt.
   std::optional<int> poll();
   // Waits up to `timeout`; the exit status, or nullopt if still running.
@@ -31,6 +39,7 @@ class Process {
   std::string name_;
   pid_t pid_ = -1;
   std::optional<int> status_;
+  std::string fifo_refused_;
 };
 
 }  // namespace hil::rig

@@ -78,16 +78,21 @@ int rig_port(const RunOptions& options) {
 }
 
 // Every node a process of its own on a private udpm port; returns their
-// exit statuses and says them in `processes`. The lock-step nodes (cnc,
-// drives, PLC) share CPU `cpu` if it is >= 0: lock-step is a chain (the
-// CNC waits for the drives, the drives for the CNC), so they gain little
-// from running side by side, and a wake-up across CPUs is an
-// inter-processor interrupt — in a VM an exit to the hypervisor. On this
-// 2-core VM the demo runs ~1.4x faster so (docs/PERFORMANCE.md); the
-// logger, which reads in batches, runs where the system puts it.
+// exit statuses and says them in `processes`, and how the lock-step nodes
+// (cnc, drives, PLC) were placed in `placed`. They share CPU `cpu` if it is
+// >= 0: lock-step is a chain (the CNC waits for the drives, the drives for
+// the CNC), so they gain little from running side by side, and a wake-up
+// across CPUs is an inter-processor interrupt — in a VM an exit to the
+// hypervisor. They run under SCHED_FIFO at one priority where the system
+// allows: a message then does not preempt its sender, so the CNC sends a
+// cycle's messages, then each receiver runs once and the CNC once more (5
+// context switches a cycle for 3 axes instead of 8). The logger, which
+// reads in batches, runs where and as the system puts it
+// (docs/PERFORMANCE.md).
 std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const fs::path& dir, const std::string& resolved,
                                                const std::string& log_file, const RunOptions& options,
-                                               const std::string& run_id, int cpu, std::ostringstream& processes) {
+                                               const std::string& run_id, int cpu, std::ostringstream& processes,
+                                               std::string& placed) {
   const std::string url = rig_url(rig_port(options));
   const fs::path bin = options.bin_dir;
   auto node_output = [&](const std::string& name) { return (dir / (name + ".out")).string(); };
@@ -104,16 +109,21 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
 
   const auto wall_start = std::chrono::steady_clock::now();
   auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
+  const Placement lock_step{cpu, options.fifo_priority};
   std::vector<std::unique_ptr<Process>> nodes;
   nodes.push_back(std::make_unique<Process>("logger", logger_args, node_output("logger")));
   for (const AxisConfig& axis : scenario.machine.axes) {
     std::vector<std::string> args = node_args("axis_sim");
     args.insert(args.end(), {"--axis", axis.name});
     nodes.push_back(
-        std::make_unique<Process>("axis_sim " + axis.name, args, node_output("axis_sim_" + axis.name), cpu));
+        std::make_unique<Process>("axis_sim " + axis.name, args, node_output("axis_sim_" + axis.name), lock_step));
   }
-  nodes.push_back(std::make_unique<Process>("plc_sim", node_args("plc_sim"), node_output("plc_sim"), cpu));
-  Process cnc("cnc", node_args("cnc"), node_output("cnc"), cpu);
+  nodes.push_back(std::make_unique<Process>("plc_sim", node_args("plc_sim"), node_output("plc_sim"), lock_step));
+  Process cnc("cnc", node_args("cnc"), node_output("cnc"), lock_step);
+  placed = cpu >= 0 ? ", the lock-step nodes on CPU " + std::to_string(cpu) : "";
+  if (options.fifo_priority > 0)
+    placed += cnc.fifo_refused().empty() ? ", SCHED_FIFO " + std::to_string(options.fifo_priority)
+                                         : ", normal scheduling (SCHED_FIFO refused: " + cnc.fifo_refused() + ")";
 
   // Lock-step runs faster than real time; this bound only catches a hang.
   // A node that fails while the CNC runs is noted with the time (a node
@@ -167,8 +177,9 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
       processes << (e.name == "cnc" ? "" : ", ") << e.name << ' ' << (e.status ? std::to_string(*e.status) : "?");
   } else {
     const int cpu = options.cpu == -2 ? ::sched_getcpu() : options.cpu;
-    where = "LCM: " + rig_url(rig_port(options)) + (cpu >= 0 ? ", the lock-step nodes on CPU " + std::to_string(cpu) : "");
-    exits = run_processes(scenario, dir, resolved, result.log_file, options, run_id, cpu, processes);
+    std::string placed;
+    exits = run_processes(scenario, dir, resolved, result.log_file, options, run_id, cpu, processes, placed);
+    where = "LCM: " + rig_url(rig_port(options)) + placed;
   }
   const double run_wall_s = wall_s();
 

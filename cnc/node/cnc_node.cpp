@@ -97,6 +97,7 @@ class CncNode : public cnc::CyclePolicy {
 
  private:
   bool wait_for_participants() {
+    announce_ready();  // those up before the CNC announce again at once
     const auto give_up = clock_type::now() + std::chrono::seconds(20);
     auto missing = [&] {
       std::string names;
@@ -129,6 +130,19 @@ class CncNode : public cnc::CyclePolicy {
     m.participants = participants_;
     m.n_participants = static_cast<int16_t>(m.participants.size());
     bus_.publish(channels::manifest, m);
+  }
+
+  void announce_ready() {
+    hil::participant_t ready;
+    ready.run_id = inbox_.run_id();
+    ready.utime = 0;
+    ready.cycle = 0;
+    ready.name = "cnc";
+    ready.phase = hil::participant_t::PHASE_READY;
+    ready.verdicts = 0;
+    ready.n_rejected = 0;
+    ready.n_lost = 0;
+    bus_.publish(channels::participant, ready);
   }
 
   void publish_run_end(int64_t k) {
