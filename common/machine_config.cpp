@@ -16,13 +16,14 @@ namespace {
 // documents them); any other is refused (ConfigMap).
 const std::vector<std::string> machine_keys = {"name", "cycle_time_us", "override_max_percent", "fb_storage_size",
                                                "m_pre_outp", "path_preparation_function", "interpolator_function",
-                                               "enable_time_based_lift", "lift_min_dist", "axes"};
+                                               "enable_time_based_lift", "lift_min_dist", "plc_watchdog_cycles",
+                                               "axes"};
 const std::vector<std::string> axis_keys = {
     "name", "v_max", "v_rapid", "a_max", "j_max", "kv", "velocity_lag_s", "velocity_loop_order",
     "velocity_damping", "velocity_feedforward", "drive_acceleration_limit", "friction_coulomb", "friction_viscous",
     "dyn_monitoring_a_warn", "dyn_monitoring_a_err", "dyn_monitoring_v_warn", "dyn_monitoring_v_err",
     "slep_max", "slep_min", "following_error_monitoring", "swe_neg", "swe_pos", "swe_toleranz",
-    "modulo_lower", "modulo_upper", "reference_position"};
+    "modulo_lower", "modulo_upper", "reference_position", "watchdog_cycles"};
 
 constexpr int64_t int32_max = std::numeric_limits<int32_t>::max();
 
@@ -38,6 +39,7 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
   if (m.get("v_rapid", axis.v_rapid, positive) && axis.v_rapid > axis.v_max)
     throw ConfigError(at + ": 'v_rapid' exceeds 'v_max'");
   axis.a_max = m.number("a_max", positive);
+  m.get("watchdog_cycles", axis.watchdog_cycles, 1, 1000000);
   axis.j_max = m.number("j_max", positive);
   axis.kv = m.number("kv", positive);
   axis.velocity_lag_s = m.number("velocity_lag_s", positive);
@@ -116,6 +118,7 @@ MachineConfig read_machine(const YAML::Node& node) {
   m.get("cycle_time_us", config.cycle_time_us, 100, 100000);
   m.get("override_max_percent", config.override_max_percent, 100, 200);
   m.get("fb_storage_size", config.fb_storage_size, 0);  // P-STUP-00033, bytes
+  m.get("plc_watchdog_cycles", config.plc_watchdog_cycles, 1, 1000000);
   if (m.has("m_pre_outp")) {
     const YAML::Node pre_output = m["m_pre_outp"];
     if (!pre_output.IsMap()) throw ConfigError(m.path("m_pre_outp") + ": must map M numbers to 0.1 um");

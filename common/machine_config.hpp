@@ -55,6 +55,9 @@ struct AxisConfig {
   // mm, machine coordinates: where a G74 homing run ends; the rig
   // simulates the reference signal there (DPS-3, docs/BLOCK_SEARCH.md).
   double reference_position = 0;
+  // Cycles the drive may leave without an answer before the CNC stops the
+  // channel with a watchdog error (real-time mode, faults; RIG-6, RIG-8).
+  int64_t watchdog_cycles = 20;
 
   double modulo_range() const { return modulo_upper - modulo_lower; }
   // The position shifted into the modulo range; itself on a linear axis.
@@ -91,6 +94,8 @@ struct MachineConfig {
   // P-CHAN-00244 lift_min_dist (the file gives 0.1 um): a lift range whose
   // path is shorter suppresses the lift (LIFT-4). 0: never.
   double lift_min_dist_mm = 0;
+  // Cycles the PLC may leave without an answer before the watchdog error.
+  int64_t plc_watchdog_cycles = 20;
   std::vector<AxisConfig> axes;
 
   double cycle_time_s() const { return cycle_time_us * 1e-6; }

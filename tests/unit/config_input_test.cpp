@@ -270,3 +270,15 @@ TEST_CASE("RIG-5 every scenario and machine file of the repository loads", "[con
   }
   CHECK(files >= 24);  // the folders were found
 }
+
+TEST_CASE("RIG-6 RIG-8 watchdogs: per drive and for the PLC, in cycles, 20 by default, at least 1", "[config]") {
+  CHECK(axis("").watchdog_cycles == 20);
+  CHECK(axis(", watchdog_cycles: 5").watchdog_cycles == 5);
+  CHECK_THROWS_WITH(axis(", watchdog_cycles: 0"), Catch::Contains("watchdog_cycles"));
+  const auto machine = [](const std::string& top) {
+    return parse_machine_config(YAML::Load(top + "axes:\n  - " + axis_x + "}\n"));
+  };
+  CHECK(machine("").plc_watchdog_cycles == 20);
+  CHECK(machine("plc_watchdog_cycles: 50\n").plc_watchdog_cycles == 50);
+  CHECK_THROWS_WITH(machine("plc_watchdog_cycles: -1\n"), Catch::Contains("plc_watchdog_cycles"));
+}
