@@ -1,6 +1,7 @@
 #pragma once
 // One drive on the bus (RIG-1, RIG-3): integrates one cycle per setpoint,
-// in order, and answers with the actual state and its monitoring.
+// in order, and answers with the actual state and its monitoring; bridges
+// the cycles of setpoints lost on the way (RIG-8).
 #include <hil/axis_setpoint_t.hpp>
 
 #include <cstdint>
@@ -22,14 +23,19 @@ class AxisSimNode {
 
  private:
   void on_setpoint(const hil::axis_setpoint_t& m);
+  void bridge_gap(int64_t cycle);
+  void step(const hil::axis_setpoint_t& m, bool answer);
 
   AxisConfig axis_;
   lcm_support::Bus& bus_;
   int64_t run_id_;
+  double cycle_time_s_;
+  int64_t cycle_us_;
   DriveModel drive_;
   DriveMonitor monitor_;
   std::string source_;
   int64_t last_cycle_ = -1;
+  hil::axis_setpoint_t last_setpoint_{};
 };
 
 }  // namespace hil::axis

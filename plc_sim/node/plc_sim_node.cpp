@@ -10,9 +10,12 @@
 namespace hil::plc {
 
 PlcSimNode::PlcSimNode(const Scenario& scenario, lcm_support::Inbox& inbox)
-    : engine_(scenario), bus_(inbox.bus()), run_id_(inbox.run_id()) {
+    : engine_(scenario), bus_(inbox.bus()), run_id_(inbox.run_id()),
+      watchdog_cycles_(scenario.machine.plc_watchdog_cycles) {
   inbox.on<hil::hli_state_t>(channels::hli_state, [this](const hil::hli_state_t& m, const lcm::ReceiveBuffer&) {
-    if (m.cycle != last_cycle_ + 1) return false;  // each cycle once, in order
+    // Each cycle once, in order; a state lost on the way (RIG-8) is a PLC
+    // cycle missed, but not more than the watchdog allows (further ahead: forged).
+    if (m.cycle <= last_cycle_ || m.cycle > last_cycle_ + 1 + watchdog_cycles_) return false;
     on_state(m);
     return true;
   });

@@ -31,6 +31,7 @@ class PlcSimNode {
   ScenarioEngine engine_;
   lcm_support::Bus& bus_;
   int64_t run_id_;
+  int64_t watchdog_cycles_;
   int64_t last_cycle_ = -1;
   int64_t utime_ = 0;
 };
