@@ -23,6 +23,7 @@ namespace fs = std::filesystem;
 // HLI state fields by name (hli_names.hpp).
 const std::vector<std::string> scenario_keys = {"name", "description", "requirements", "machine", "nc_program",
                                                 "nc_file", "run", "plc", "expect", "expect_events",
+                                                "faults", "fault_seed",
                                                 "expect_violations", "variants", "compare"};
 const std::vector<std::string> run_keys = {"max_time_s", "settle_time_s", "allow_errors"};
 const std::vector<std::string> plc_keys = {"timeline", "m_function_ack_cycles"};
@@ -372,6 +373,7 @@ Scenario read_scenario(const YAML::Node& root, const MachineConfig* machine) {
     s.timeline = parse_list<TimelineStep>(plc["timeline"], "plc.timeline", parse_step);
     plc.get("m_function_ack_cycles", s.m_function_ack_cycles, 0);
   }
+  s.faults = parse_fault_plan(m["faults"], m["fault_seed"], s.machine);  // RIG-8
   s.expectations = parse_list<Expectation>(m["expect"], "expect", parse_expectation);
   s.expected_events = parse_list<EventExpectation>(m["expect_events"], "expect_events", parse_event_expectation);
   s.expected_violations = parse_list<ViolationExpectation>(m["expect_violations"], "expect_violations",

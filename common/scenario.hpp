@@ -11,6 +11,7 @@
 
 #include "event.hpp"
 #include "hli.hpp"
+#include "fault_plan.hpp"
 #include "machine_config.hpp"
 
 namespace hil {
@@ -119,6 +120,7 @@ struct Scenario {
   std::vector<EventExpectation> expected_events;
   std::vector<ViolationExpectation> expected_violations;
   bool allow_errors = false;   // unexpected error events fail the run unless true
+  FaultPlan faults;            // RIG-8: what the rig does to the cycle channels
 
   YAML::Node resolved;  // the whole scenario, machine and NC program inline
 };

@@ -95,6 +95,7 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       f.lock_step[channels::hli_state];
       f.lock_step[channels::hli_control];
       f.expectations = static_cast<int>(log.scenario->expectations.size() + log.scenario->expected_events.size());
+      f.faults = log.scenario->faults;
     } else if (ch == channels::log_end) {
       hil::log_summary_t m;
       if (!of_run(m)) continue;

@@ -33,6 +33,45 @@ void check_cycles(const std::string& channel, const std::vector<int64_t>& cycles
                        std::to_string(last) + ")");
 }
 
+// How often the log must hold each cycle 0 .. last of a channel the faults
+// act on: the senders' rules replayed (fault_plan.hpp).
+std::vector<int> expected_copies(const FaultPlan& plan, const std::string& channel, int64_t last) {
+  std::vector<int> copies(static_cast<size_t>(last + 1), 0);
+  const std::string sender = sender_of(channel);
+  if (sender == "cnc") {
+    for (int64_t k = 0; k <= last; ++k) {
+      const MessageFate f = plan.fate(channel, k);
+      copies[static_cast<size_t>(k)] = f.dropped || f.corrupted ? 0 : f.duplicated ? 2 : 1;
+    }
+    return copies;
+  }
+  AnswerSchedule schedule(plan, sender);
+  for (int64_t j = 0; j <= last; ++j)
+    for (const int64_t k : schedule.arrivals(j)) ++copies[static_cast<size_t>(k)];
+  return copies;
+}
+
+void check_planned_cycles(const std::string& channel, const std::vector<int64_t>& cycles, int64_t last,
+                          const FaultPlan& plan, std::vector<std::string>& problems) {
+  const std::vector<int> expected = expected_copies(plan, channel, last);
+  std::vector<int> seen(expected.size(), 0);
+  int64_t outside = 0, differ = 0, first = -1;
+  for (const int64_t c : cycles)
+    if (c < 0 || c > last) ++outside;
+    else ++seen[static_cast<size_t>(c)];
+  for (size_t c = 0; c < expected.size(); ++c)
+    if (seen[c] != expected[c]) {
+      if (first < 0) first = static_cast<int64_t>(c);
+      ++differ;
+    }
+  if (differ > 0)
+    problems.push_back(channel + ": " + std::to_string(differ) + " cycle(s) not as the planned faults let through (the first: " +
+                       std::to_string(first) + ", " + std::to_string(seen[static_cast<size_t>(first)]) + " message(s), " +
+                       std::to_string(expected[static_cast<size_t>(first)]) + " expected)");
+  if (outside > 0)
+    problems.push_back(channel + ": " + std::to_string(outside) + " message(s) of a cycle outside 0.." + std::to_string(last));
+}
+
 }  // namespace
 
 std::vector<std::string> log_problems(const LogFacts& f) {
@@ -42,21 +81,32 @@ std::vector<std::string> log_problems(const LogFacts& f) {
   if (!f.sealed) p.push_back("the logger did not close the log (no HIL_LOG_END): it was cut short");
   if (!f.end_cycle) p.push_back("no RUN_END from the cnc");
   for (const auto& [name, cycle] : f.lost)
-    p.push_back(name + " went silent: the cnc lost it at cycle " + std::to_string(cycle));
+    if (!f.faults.touches(name)) p.push_back(name + " went silent: the cnc lost it at cycle " + std::to_string(cycle));
   std::vector<std::string> no_end;
   for (const auto& name : f.participants)
     if (!f.ended.count(name) && !f.lost.count(name) && name != "cnc") no_end.push_back(name);
   if (!no_end.empty()) p.push_back("no RUN_END from " + list(no_end));
-  if (f.sealed && !f.logger_missing.empty()) p.push_back("the logger stopped waiting for " + list(f.logger_missing));
+  std::vector<std::string> not_waited_for;  // the seal names the lost too
+  for (const auto& name : f.logger_missing)
+    if (!(f.lost.count(name) && f.faults.touches(name))) not_waited_for.push_back(name);
+  if (f.sealed && !not_waited_for.empty()) p.push_back("the logger stopped waiting for " + list(not_waited_for));
   if (f.logger_socket_drops > 0)
     p.push_back("the kernel dropped " + std::to_string(f.logger_socket_drops) +
                 " datagram(s) at the logger's socket (its receive buffer was full)");
-  if (f.end_cycle)
-    for (const auto& [channel, cycles] : f.lock_step) check_cycles(channel, cycles, *f.end_cycle, p);
-  for (const auto& [who, ledger] : f.refused)
+  if (f.end_cycle) {
+    for (const auto& [channel, cycles] : f.lock_step) {
+      if (f.faults.touches_channel(channel)) check_planned_cycles(channel, cycles, *f.end_cycle, f.faults, p);
+      else check_cycles(channel, cycles, *f.end_cycle, p);
+    }
+  }
+  for (const auto& [who, all] : f.refused) {
+    traffic::Ledger ledger;  // without the channels the faults act on
+    for (const auto& [channel, counts] : all.by_channel())
+      if (!f.faults.touches_channel(channel)) ledger.add(channel, counts);
     if (ledger.fails_run())
       p.push_back((who == "log" ? "in the log" : who + " refused") + std::string(" messages of this run or unreadable: ") +
                   ledger.describe());
+  }
   const int verdicts = f.verdict_pass + f.verdict_fail;
   if (f.verdicts_announced && *f.verdicts_announced != verdicts)
     p.push_back("the log holds " + std::to_string(verdicts) + " verdict event(s), plc_sim published " +
@@ -71,7 +121,8 @@ RunVerdict judge_run(const std::vector<ProcessExit>& exits, const LogFacts& fact
   RunVerdict v;
   for (const ProcessExit& e : exits)
     if (!e.status) v.reasons.push_back(e.name + " hung and was killed");
-    else if (*e.status != 0) v.reasons.push_back(e.name + " exited with status " + std::to_string(*e.status));
+    else if (*e.status != 0 && !(*e.status == 128 + 9 && facts.faults.kill_cycle(e.name)))  // a planned kill
+      v.reasons.push_back(e.name + " exited with status " + std::to_string(*e.status));
   for (const std::string& problem : log_problems(facts)) v.reasons.push_back("log: " + problem);
   if (facts.verdict_fail > 0) v.reasons.push_back(std::to_string(facts.verdict_fail) + " expectation(s) failed");
   if (!check_failure.empty()) v.reasons.push_back("offline check: " + check_failure);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "fault_plan.hpp"
 #include "traffic.hpp"
 
 namespace hil::logger {
@@ -34,6 +35,13 @@ struct LogFacts {
   // What was not taken, by who did not take it: "log" (found reading it),
   // "logger" (the seal), and every node (its RUN_END).
   std::map<std::string, traffic::Ledger> refused;
+
+  // RIG-8: the faults the scenario planned. On a channel they act on, the
+  // log must hold exactly what the plan lets through (each cycle as often as
+  // sent: none if dropped, damaged or never released, twice if duplicated);
+  // refusals there, a participant they act on lost, a participant they kill
+  // exiting by SIGKILL are the faults' doing, not a broken run.
+  FaultPlan faults;
 
   int expectations = -1;               // the scenario's expectations (expect + expect_events), -1 unknown
   int verdict_pass = 0, verdict_fail = 0;  // plc_sim's verdict events (event_t.verdict)

@@ -8,6 +8,7 @@
 
 #include "axis_sim_node.hpp"
 #include "cnc_node.hpp"
+#include "fault_bus.hpp"
 #include "in_process_bus.hpp"
 #include "logger_node.hpp"
 #include "participant.hpp"
@@ -18,9 +19,14 @@
 namespace hil::rig {
 namespace {
 
-// A node's inbox and handshake; the node itself is made on the inbox.
+// A node's inbox and handshake on its own side of the bus (with the
+// scenario's faults on what it sends, RIG-8); the node is made on the inbox.
 struct Attendee {
-  Attendee(lcm_support::Bus& bus, int64_t run_id, const std::string& name) : inbox(bus, run_id), participant(inbox, name) {}
+  Attendee(lcm_support::Bus& bus, const FaultPlan& faults, int64_t run_id, const std::string& name)
+      : side(bus, faults, name), inbox(side, run_id), participant(inbox, name) {}
+  // The exit status its process gets when the node ends normally with `status`.
+  int exit(int status) const { return side.killed() ? 128 + 9 : status; }
+  lcm_support::FaultInjectingBus side;
   lcm_support::Inbox inbox;
   lcm_support::Participant participant;
 };
@@ -53,7 +59,8 @@ std::vector<logger::ProcessExit> run_in_process(const std::string& resolved_file
   // The logger first: it records every message from the first on.
   logger::LoggerNode logger(bus, log_file, run_id, participants, std::make_pair(text, scenario.nc_program),
                              false);
-  Attendee logger_attendee(bus, run_id, "logger");
+  const FaultPlan no_faults;
+  Attendee logger_attendee(bus, no_faults, run_id, "logger");
   int64_t announced_cycle = -1;
   logger.on_progress([&](int64_t cycle) {  // the heartbeat the CNC's flow control waits for
     if (cycle < announced_cycle + 32) return;
@@ -63,10 +70,10 @@ std::vector<logger::ProcessExit> run_in_process(const std::string& resolved_file
   std::deque<Attendee> axis_attendees;
   std::deque<axis::AxisSimNode> axes;
   for (const AxisConfig& axis : scenario.machine.axes) {
-    axis_attendees.emplace_back(bus, run_id, "axis_sim " + axis.name);
+    axis_attendees.emplace_back(bus, scenario.faults, run_id, "axis_sim " + axis.name);
     axes.emplace_back(axis, scenario.machine.cycle_time_s(), axis_attendees.back().inbox);
   }
-  Attendee plc_attendee(bus, run_id, plc::PlcSimNode::source);
+  Attendee plc_attendee(bus, scenario.faults, run_id, plc::PlcSimNode::source);
   plc::PlcSimNode plc(scenario, plc_attendee.inbox);
 
   logger_attendee.participant.announce_ready();
@@ -77,8 +84,9 @@ std::vector<logger::ProcessExit> run_in_process(const std::string& resolved_file
   for (const AxisConfig& axis : scenario.machine.axes) cnc_participants.push_back("axis_sim " + axis.name);
   cnc_participants.insert(cnc_participants.end(), {"plc_sim", "logger"});
   std::vector<logger::ProcessExit> exits;
+  lcm_support::FaultInjectingBus cnc_side(bus, scenario.faults, "cnc");
   exits.push_back({"cnc", guarded("cnc", [&] {
-                     return cnc_node::run_cnc(scenario, text, bus, run_id, cnc_participants, {});
+                     return cnc_node::run_cnc(scenario, text, cnc_side, run_id, cnc_participants, {});
                    })});
   bus.drain();  // the CNC's RUN_END reaches everyone
 
@@ -88,15 +96,15 @@ std::vector<logger::ProcessExit> run_in_process(const std::string& resolved_file
   for (size_t i = 0; i < axes.size(); ++i)
     others.push_back({axes[i].name(), guarded(axes[i].name(), [&] {
                         Attendee& a = axis_attendees[i];
-                        if (!a.participant.ended()) return 2;
+                        if (!a.participant.ended()) return a.exit(2);
                         a.participant.announce_end(axes[i].last_cycle());
-                        return 0;
+                        return a.exit(0);
                       })});
   others.push_back({plc::PlcSimNode::source, guarded(plc::PlcSimNode::source, [&] {
                       lcm_support::Participant& p = plc_attendee.participant;
-                      if (!p.ended()) return 2;
+                      if (!p.ended()) return plc_attendee.exit(2);
                       p.announce_end(p.end_cycle(), plc.report(p.end_cycle()));
-                      return 0;
+                      return plc_attendee.exit(0);
                     })});
   bus.drain();
   exits.push_back({"logger", guarded("logger", [&] {

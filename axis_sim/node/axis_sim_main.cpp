@@ -3,6 +3,7 @@
 
 #include "axis_sim_node.hpp"
 #include "node_options.hpp"
+#include "fault_bus.hpp"
 #include "udpm_bus.hpp"
 #include "participant.hpp"
 #include "scenario.hpp"
@@ -18,7 +19,7 @@ int main(int argc, char** argv) {
     const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
     const int index = scenario.machine.axis_index(axis_name);
     if (index < 0) throw std::runtime_error("axis '" + axis_name + "' is not on the machine");
-    const auto bus = hil::lcm_support::node_bus(options.url);
+    const auto bus = hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "axis_sim " + axis_name);
     hil::lcm_support::Inbox inbox(*bus, options.run_id);
     hil::axis::AxisSimNode node(scenario.machine.axes[index], scenario.machine.cycle_time_s(), inbox);
     hil::lcm_support::Participant participant(inbox, node.name());

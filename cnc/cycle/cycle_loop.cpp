@@ -8,6 +8,7 @@ namespace {
 Event lost_event(const LostParticipant& p) {
   Event e;
   e.axis = p.axis;
+  e.parameter = p.parameter;
   e.message = p.name + " lost: " + p.what + "; the run goes on without it";
   return e;
 }

@@ -30,6 +30,7 @@ struct LostParticipant {
   std::string name;  // "axis_sim X", "plc_sim", "logger"
   std::string axis;  // the drive's axis, "" for any other participant
   std::string what;  // e.g. "no answer to cycle 812 within 5000 ms"
+  std::string parameter;  // the machine parameter of the watchdog that fired, e.g. "watchdog_cycles"
 };
 
 // What came back for one cycle.

@@ -4,6 +4,7 @@
 
 #include "cnc_node.hpp"
 #include "node_options.hpp"
+#include "fault_bus.hpp"
 #include "udpm_bus.hpp"
 #include "rerun.hpp"
 #include "run_identity.hpp"
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
       participants.push_back("plc_sim");
       participants.push_back("logger");
     }
-    const auto bus = hil::lcm_support::node_bus(options.url);
+    const auto bus = hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "cnc");
     return hil::cnc_node::run_cnc(
         scenario, text, *bus, options.run_id, participants,
         {std::chrono::milliseconds(answer_timeout_ms), std::chrono::milliseconds(logger_timeout_ms)});

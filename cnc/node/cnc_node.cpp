@@ -38,7 +38,7 @@ class CncNode : public cnc::CyclePolicy {
       : scenario_(scenario), machine_(scenario.machine), scenario_text_(scenario_text), bus_(bus),
         inbox_(bus, run_id), participants_(std::move(participants)), timeouts_(timeouts),
         lock_step_(machine_, std::count(participants_.begin(), participants_.end(), "logger") > 0,
-                   timeouts.answer.count(), timeouts.logger.count()) {
+                   timeouts.answer.count(), timeouts.logger.count(), &scenario_.faults) {
     for (size_t i = 0; i < machine_.axes.size(); ++i)
       inbox_.on<hil::axis_state_t>(channels::axis_state(machine_.axes[i].name),
                                    [this, i](const hil::axis_state_t& m, const lcm::ReceiveBuffer&) {
@@ -69,7 +69,10 @@ class CncNode : public cnc::CyclePolicy {
     spdlog::info("run ended after cycle {} ({:.3f} s simulated), channel {}", k, k * machine_.cycle_time_s(),
                  to_string(channel.hli().channel_state));
     if (!inbox_.ledger().empty()) spdlog::warn("refused: {}", inbox_.ledger().describe());
-    return lock_step_.lost().empty() && result.outcome != cnc::RunOutcome::answers_missing ? 0 : 3;
+    // A participant lost to the scenario's own faults (RIG-8) is its design, not a failure.
+    bool lost_unplanned = false;
+    for (const auto& [name, cycle] : lock_step_.lost()) lost_unplanned = lost_unplanned || !scenario_.faults.touches(name);
+    return !lost_unplanned && result.outcome != cnc::RunOutcome::answers_missing ? 0 : 3;
   }
 
   bool publish(int64_t k, const cnc::Channel& channel, const std::vector<Event>& events) override {

@@ -1,46 +1,74 @@
 #include "lock_step.hpp"
 
+#include <algorithm>
+
 namespace hil::cnc_node {
 
+LockStep::Answerer LockStep::answerer(const std::string& name, const std::string& axis, const std::string& parameter,
+                                      int64_t watchdog_cycles, const FaultPlan* faults) {
+  Answerer a{name, axis, parameter, AnswerWatch(name, watchdog_cycles), std::nullopt, {}, false, 0};
+  if (faults && faults->touches(name)) a.schedule.emplace(*faults, name);
+  return a;
+}
+
 LockStep::LockStep(const MachineConfig& machine, bool watch_logger, int64_t answer_timeout_ms,
-                   int64_t logger_timeout_ms)
-    : watch_logger_(watch_logger), answer_timeout_ms_(answer_timeout_ms), logger_timeout_ms_(logger_timeout_ms) {
-  for (const AxisConfig& axis : machine.axes) axes_.push_back({"axis_sim " + axis.name, axis.name});
+                   int64_t logger_timeout_ms, const FaultPlan* faults)
+    : plc_(answerer("plc_sim", "", "plc_watchdog_cycles", machine.plc_watchdog_cycles, faults)),
+      logger_(answerer("logger", "", "", 0, nullptr)), watch_logger_(watch_logger),
+      answer_timeout_ms_(answer_timeout_ms), logger_timeout_ms_(logger_timeout_ms) {
+  for (const AxisConfig& axis : machine.axes)
+    axes_.push_back(answerer("axis_sim " + axis.name, axis.name, "watchdog_cycles", axis.watchdog_cycles, faults));
 }
 
 void LockStep::begin(int64_t cycle) {
   cycle_ = cycle;
-  for (Answerer& a : axes_) a.answered = false;
-  plc_.answered = false;
+  auto due = [cycle](Answerer& a) {
+    a.errors = 0;
+    a.awaited = a.schedule ? a.schedule->arrivals(cycle) : std::vector<int64_t>{cycle};
+    if (a.lost) a.awaited.clear();
+  };
+  for (Answerer& a : axes_) due(a);
+  due(plc_);
   control_.reset();
+}
+
+bool LockStep::take_due(Answerer& who, int64_t cycle, bool& use) {
+  if (who.lost) return false;
+  const auto it = std::find(who.awaited.begin(), who.awaited.end(), cycle);
+  if (it == who.awaited.end()) return false;
+  who.awaited.erase(it);
+  const AnswerWatch::Answer a = who.watch.take(cycle, cycle_);
+  use = a == AnswerWatch::Answer::in_time || a == AnswerWatch::Answer::late;
+  return true;
 }
 
 bool LockStep::take_axis(size_t axis, int64_t cycle, int32_t errors) {
   Answerer& a = axes_.at(axis);
-  if (cycle != cycle_ || a.answered || a.lost) return false;
-  a.answered = true;
-  a.errors = errors;
+  bool use = false;
+  if (!take_due(a, cycle, use)) return false;
+  if (use) a.errors |= errors;  // an error in any answer of the cycle reaches the channel
   return true;
 }
 
 bool LockStep::take_plc(int64_t cycle, const HliControl& control) {
-  if (cycle != cycle_ || plc_.answered || plc_.lost) return false;
-  plc_.answered = true;
-  control_ = control;
+  bool use = false;
+  if (!take_due(plc_, cycle, use)) return false;
+  if (use) control_ = control;  // the newest: answers are taken in order
   return true;
 }
 
 bool LockStep::complete() const {
-  if (!plc_.answered && !plc_.lost) return false;
+  if (!plc_.lost && !plc_.awaited.empty()) return false;
   for (const Answerer& a : axes_)
-    if (!a.answered && !a.lost) return false;
+    if (!a.lost && !a.awaited.empty()) return false;
   return true;
 }
 
-void LockStep::lose(Answerer& who, const std::string& what) {
+void LockStep::lose(Answerer& who, const std::string& what, const std::string& parameter) {
   who.lost = true;
   who.errors = 0;
-  newly_lost_.push_back({who.name, who.axis, what});
+  who.awaited.clear();
+  newly_lost_.push_back({who.name, who.axis, what, parameter});
   lost_so_far_.emplace_back(who.name, cycle_);
 }
 
@@ -48,8 +76,8 @@ void LockStep::lose_silent() {
   const std::string what =
       "no answer to cycle " + std::to_string(cycle_) + " within " + std::to_string(answer_timeout_ms_) + " ms";
   for (Answerer& a : axes_)
-    if (!a.answered && !a.lost) lose(a, what);
-  if (!plc_.answered && !plc_.lost) lose(plc_, what);
+    if (!a.awaited.empty() && !a.lost) lose(a, what);
+  if (!plc_.awaited.empty() && !plc_.lost) lose(plc_, what);
 }
 
 void LockStep::check_logger(int64_t now_us) {
@@ -70,11 +98,27 @@ void LockStep::check_logger(int64_t now_us) {
 }
 
 LockStep::Taken LockStep::take() {
+  auto watchdog = [this](Answerer& a) {
+    if (a.lost || !a.watch.end_cycle(cycle_)) return;
+    lose(a,
+         "watchdog: no answer for " + std::to_string(a.watch.silent_cycles(cycle_)) + " cycles (" +
+             a.watchdog_parameter + " " + std::to_string(a.watch.watchdog_cycles()) + ")",
+         a.watchdog_parameter);
+  };
+  for (Answerer& a : axes_) watchdog(a);
+  watchdog(plc_);
   Taken t;
   t.control = control_;
   for (const Answerer& a : axes_) t.axis_errors.push_back(a.lost ? 0 : a.errors);
   t.lost.swap(newly_lost_);
   return t;
+}
+
+std::vector<std::pair<std::string, AnswerCounts>> LockStep::answer_counts() const {
+  std::vector<std::pair<std::string, AnswerCounts>> out;
+  for (const Answerer& a : axes_) out.emplace_back(a.name, a.watch.counts());
+  out.emplace_back(plc_.name, plc_.watch.counts());
+  return out;
 }
 
 }  // namespace hil::cnc_node

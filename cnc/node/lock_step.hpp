@@ -9,6 +9,11 @@
 // silent for longer than its timeout, and it must not fall more than
 // `logger_window` cycles behind: a logger descheduled on a loaded machine
 // would otherwise lose datagrams at its full socket (RIG-9).
+// With faults planned (RIG-8) the answers due in a cycle are those the plan
+// lets arrive then (AnswerSchedule): none for a lost input, a late one for
+// a delay, all at once after a freeze; an AnswerWatch per participant counts
+// them, and its watchdog loses a participant silent for longer than its
+// machine parameter (watchdog_cycles, plc_watchdog_cycles).
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -16,7 +21,9 @@
 #include <utility>
 #include <vector>
 
+#include "answer_watch.hpp"
 #include "cycle_loop.hpp"
+#include "fault_plan.hpp"
 #include "hli.hpp"
 #include "machine_config.hpp"
 
@@ -24,14 +31,22 @@ namespace hil::cnc_node {
 
 class LockStep {
  public:
-  // An axis_sim per axis of `machine`; `watch_logger`: a logger takes part.
-  LockStep(const MachineConfig& machine, bool watch_logger, int64_t answer_timeout_ms, int64_t logger_timeout_ms);
+  // An axis_sim per axis of `machine`; `watch_logger`: a logger takes part;
+  // `faults`: the run's plan (it must outlive this), none or empty: every
+  // answer in its own cycle.
+  LockStep(const MachineConfig& machine, bool watch_logger, int64_t answer_timeout_ms, int64_t logger_timeout_ms,
+           const FaultPlan* faults = nullptr);
 
-  // Waits for the answers to `cycle` from now on.
+  // Waits for the answers due in `cycle` from now on (call for every cycle, in order).
   void begin(int64_t cycle);
-  // An answer; false (refused) unless it answers the cycle waited for, first.
+  // An answer; false (refused) unless it is one due now and not yet taken.
   bool take_axis(size_t axis, int64_t cycle, int32_t errors);
   bool take_plc(int64_t cycle, const HliControl& control);
+  // The cycles whose answers are due now and not yet taken (a rerun feeds them).
+  const std::vector<int64_t>& awaited_axis(size_t axis) const { return axes_.at(axis).awaited; }
+  const std::vector<int64_t>& awaited_plc() const { return plc_.awaited; }
+  // The counts of each participant's answers, drives first, the PLC last.
+  std::vector<std::pair<std::string, AnswerCounts>> answer_counts() const;
   // Every participant not lost has answered the cycle.
   bool complete() const;
   // The watchdog fired: whoever has not answered is lost.
@@ -67,15 +82,22 @@ class LockStep {
   struct Answerer {
     std::string name;
     std::string axis;
-    bool answered = false;
+    std::string watchdog_parameter;
+    AnswerWatch watch;
+    std::optional<AnswerSchedule> schedule;  // with faults planned on it
+    std::vector<int64_t> awaited;             // due now, not yet taken
     bool lost = false;
-    int32_t errors = 0;
+    int32_t errors = 0;  // of the answers taken this cycle
   };
-  void lose(Answerer& who, const std::string& what);
+  Answerer answerer(const std::string& name, const std::string& axis, const std::string& parameter,
+                    int64_t watchdog_cycles, const FaultPlan* faults);
+  // Takes one of the answers due: whether it was due; `use` whether it is new.
+  bool take_due(Answerer& who, int64_t cycle, bool& use);
+  void lose(Answerer& who, const std::string& what, const std::string& parameter = "");
 
   std::vector<Answerer> axes_;
-  Answerer plc_{"plc_sim", ""};
-  Answerer logger_{"logger", ""};
+  Answerer plc_;
+  Answerer logger_;
   bool watch_logger_;
   int64_t answer_timeout_ms_, logger_timeout_ms_;
   int64_t cycle_ = -1;

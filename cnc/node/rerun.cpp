@@ -113,7 +113,8 @@ std::string describe_difference(const std::string& channel, const std::string& r
 class RecordedInput : public cnc::CyclePolicy {
  public:
   RecordedInput(Recording recording, std::ostream& out)
-      : rec_(std::move(recording)), out_(out), lock_step_(machine(), false, rec_.answer_timeout_ms, 0) {}
+      : rec_(std::move(recording)), out_(out),
+        lock_step_(machine(), false, rec_.answer_timeout_ms, 0, &rec_.scenario->faults) {}
 
   bool publish(int64_t k, const cnc::Channel& channel, const std::vector<Event>& events) override {
     for (const auto& m : cycle_messages(channel, machine(), events, k, rec_.run_id))
@@ -123,15 +124,22 @@ class RecordedInput : public cnc::CyclePolicy {
   bool publish_event(int64_t k, const Event& event) override {
     return matches(k, event_message(event, machine(), k, rec_.run_id));
   }
-  // The recorded answers go through the live node's LockStep; an answer the
-  // recorded CNC no longer took (from a participant it had lost) is left out.
+  // The recorded answers go through the live node's LockStep, those due in
+  // the cycle (its own answer; with faults planned, what the plan lets arrive
+  // then, RIG-8); an answer the recorded CNC no longer took (from a
+  // participant it had lost) is left out.
   std::optional<cnc::CycleAnswers> answers(int64_t k) override {
     lock_step_.begin(k);
-    if (const auto c = rec_.controls.find(k); c != rec_.controls.end() && !lost_by("plc_sim", k))
-      lock_step_.take_plc(k, c->second);
-    if (const auto e = rec_.axis_errors.find(k); e != rec_.axis_errors.end())
-      for (size_t i = 0; i < e->second.size(); ++i)
-        if (e->second[i] && !lost_by("axis_sim " + machine().axes[i].name, k)) lock_step_.take_axis(i, k, *e->second[i]);
+    if (!lost_by("plc_sim", k))
+      for (const int64_t c : std::vector<int64_t>(lock_step_.awaited_plc()))
+        if (const auto control = rec_.controls.find(c); control != rec_.controls.end())
+          lock_step_.take_plc(c, control->second);
+    for (size_t i = 0; i < machine().axes.size(); ++i) {
+      if (lost_by("axis_sim " + machine().axes[i].name, k)) continue;
+      for (const int64_t c : std::vector<int64_t>(lock_step_.awaited_axis(i)))
+        if (const auto e = rec_.axis_errors.find(c); e != rec_.axis_errors.end() && e->second[i])
+          lock_step_.take_axis(i, c, *e->second[i]);
+    }
     if (!lock_step_.complete()) lock_step_.lose_silent();
     LockStep::Taken taken = lock_step_.take();
     return cnc::CycleAnswers{taken.control, drive_errors(machine(), taken.axis_errors), std::move(taken.lost)};

@@ -57,6 +57,7 @@ LoggerNode::LoggerNode(lcm_support::Bus& bus, const std::string& path, int64_t r
     : log_(path), decode_check_(decode_check), run_id_(run_id), scenario_(std::move(scenario)) {
   for (const std::string& name : participants) attendance_.expect(name);
   told_participants_ = !participants.empty();
+  if (scenario_) faults_ = scenario_from_text(scenario_->first, scenario_->second).faults;
   // The first subscription: it must exist before any other (the inbox's
   // come after it), else it is handed messages it never counted.
   bus.subscribe(
@@ -167,9 +168,13 @@ int LoggerNode::finish(const std::string& path, double linger_s) const {
   if (!refused_.empty()) spdlog::warn("not recorded: {}", refused_.describe());
   const std::vector<std::string> missing = attendance_.missing();
   if (!missing.empty()) spdlog::error("no RUN_END within {} s of the CNC's from: {}", linger_s, names(missing));
+  std::vector<std::string> lost;  // but those the scenario's faults act on (RIG-8)
+  for (const auto& name : attendance_.lost())
+    if (!faults_.touches(name)) lost.push_back(name);
   if (!attendance_.lost().empty())
-    spdlog::error("lost during the run (the CNC says): {}", names({attendance_.lost().begin(), attendance_.lost().end()}));
-  return missing.empty() && attendance_.lost().empty() && !scenario_mismatch_ ? 0 : 3;
+    spdlog::log(lost.empty() ? spdlog::level::info : spdlog::level::err, "lost during the run (the CNC says): {}{}",
+                names({attendance_.lost().begin(), attendance_.lost().end()}), lost.empty() ? " (faults planned)" : "");
+  return missing.empty() && lost.empty() && !scenario_mismatch_ ? 0 : 3;
 }
 
 }  // namespace hil::logger

@@ -24,6 +24,7 @@
 #include "bus.hpp"
 #include "event_log_writer.hpp"
 #include "inbox.hpp"
+#include "fault_plan.hpp"
 #include "verdict.hpp"
 
 namespace hil::logger {
@@ -77,6 +78,7 @@ class LoggerNode {
   bool decode_check_;
   int64_t run_id_;
   std::optional<std::pair<std::string, std::string>> scenario_;
+  FaultPlan faults_;  // the scenario's (RIG-8): whom it may lose by design
   Attendance attendance_;
   bool told_participants_ = false;  // by hil run; else the manifest's
   int64_t recorded_ = 0, heard_ = 0;

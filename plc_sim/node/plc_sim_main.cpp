@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 
 #include "node_options.hpp"
+#include "fault_bus.hpp"
 #include "udpm_bus.hpp"
 #include "participant.hpp"
 #include "plc_sim_node.hpp"
@@ -17,7 +18,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   return hil::lcm_support::guarded_main(PlcSimNode::source, [&] {
     const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
-    const auto bus = hil::lcm_support::node_bus(options.url);
+    const auto bus = hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "plc_sim");
     hil::lcm_support::Inbox inbox(*bus, options.run_id);
     PlcSimNode node(scenario, inbox);
     hil::lcm_support::Participant participant(inbox, PlcSimNode::source);
