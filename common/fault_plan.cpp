@@ -105,8 +105,8 @@ bool FaultPlan::touches_channel(const std::string& channel) const {
 
 FaultPlan parse_fault_plan(const YAML::Node& faults, const YAML::Node& seed, const MachineConfig& machine) {
   FaultPlan plan;
-  if (seed) plan.seed = static_cast<uint64_t>(config_whole(seed, "fault_seed", 0, std::numeric_limits<int64_t>::max()));
-  if (!faults) return plan;
+  if (seed && !seed.IsNull()) plan.seed = static_cast<uint64_t>(config_whole(seed, "fault_seed", 0, std::numeric_limits<int64_t>::max()));
+  if (!faults || faults.IsNull()) return plan;
   if (!faults.IsSequence()) throw ConfigError("faults: must be a list");
   const double cycle_s = machine.cycle_time_s();
   auto cycles = [&](double s) { return static_cast<int64_t>(std::llround(s / cycle_s)); };
