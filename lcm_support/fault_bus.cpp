@@ -31,6 +31,7 @@ void FaultInjectingBus::send(const std::string& channel, const std::vector<uint8
 }
 
 void FaultInjectingBus::publish(const std::string& channel, const void* data, uint32_t size) {
+  if (plan_.empty()) return inner_.publish(channel, data, size);
   if (killed_) return;
   const std::optional<Identity> id = identify_header(channel, data, size);
   if (kill_ && id && id->cycle >= *kill_) {  // it dies before it sends anything of that cycle

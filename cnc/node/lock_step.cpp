@@ -99,7 +99,9 @@ void LockStep::check_logger(int64_t now_us) {
 
 LockStep::Taken LockStep::take() {
   auto watchdog = [this](Answerer& a) {
-    if (a.lost || !a.watch.end_cycle(cycle_)) return;
+    // Without faults planned on it every answer is due in its own cycle
+    // and waited for (the wall-clock timeout loses a silent one).
+    if (a.lost || !a.schedule || !a.watch.end_cycle(cycle_)) return;
     lose(a,
          "watchdog: no answer for " + std::to_string(a.watch.silent_cycles(cycle_)) + " cycles (" +
              a.watchdog_parameter + " " + std::to_string(a.watch.watchdog_cycles()) + ")",

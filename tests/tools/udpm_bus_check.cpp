@@ -13,7 +13,8 @@
 #include "udpm_bus.hpp"
 
 int main(int argc, char** argv) {
-  const std::string url = argc > 1 ? argv[1] : "udpm://239.255.76.67:7798?ttl=0";
+  // A deep receive buffer: the burst (a 100 kB message among 200) must not overflow it under load.
+  const std::string url = argc > 1 ? argv[1] : "udpm://239.255.76.67:7798?ttl=0&recv_buf_size=4194304";
   lcm::LCM reader(url);
   if (!reader.good()) return std::fprintf(stderr, "cannot open LCM on %s\n", url.c_str()), 1;
   std::vector<std::string> received;
