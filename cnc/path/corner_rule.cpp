@@ -29,10 +29,11 @@ double curvature_step_velocity(double dk, double kappa, double j_max, double cyc
 
 Junction junction(const PathSegment& before, const PathSegment& after, const MachineConfig& machine) {
   const std::vector<double> t1 = before.tangent(before.length()), t2 = after.tangent(0);
-  const std::vector<double> k1 = before.curvature(before.length()), k2 = after.curvature(0);
-  Junction j{std::min(before.limits().v, after.limits().v), false};
   for (size_t i = 0; i < t1.size(); ++i)
     if (std::abs(t2[i] - t1[i]) > tangent_round_off) return {0.0, false};
+  // A corner needs no curvatures (most transitions of a polyline).
+  const std::vector<double> k1 = before.curvature(before.length()), k2 = after.curvature(0);
+  Junction j{std::min(before.limits().v, after.limits().v), false};
   const double kappa = std::max(norm(k1), norm(k2));
   const double cycle = machine.cycle_time_s();
   for (size_t i = 0; i < t1.size(); ++i) {

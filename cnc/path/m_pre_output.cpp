@@ -65,7 +65,7 @@ bool insert_pre_output(std::deque<Block>& out, const MFunction& m, const Block& 
 
 }  // namespace
 
-void MPreOutput::add(Block block) {
+void MPreOutput::add(Block&& block) {
   std::vector<MFunction> stay;
   for (const MFunction& m : block.m_functions) {
     if (m.pre_output_mm <= 0) {

@@ -32,7 +32,7 @@ class MPreOutput : public BlockSource {
   size_t blocks_held() const { return held_.size(); }
 
  private:
-  void add(Block block);
+  void add(Block&& block);
   void release_final();
 
   BlockSource& upstream_;
