@@ -61,9 +61,10 @@ std::optional<Word> axis_command_word(std::string_view code, char letter, size_t
   return Word{letter, 0.0, code.substr(i, end - i), content};
 }
 
-// The word of `letter` whose number starts at code[j]. std::from_chars:
-// no locale, no allocation (strtod was a third of the decoder's time).
-Word number_word(std::string_view code, char letter, size_t j, size_t& end) {
+// The value of the number of `letter` that starts at code[j]; `end` after
+// it. std::from_chars where read_decimal_digits has none: no locale, no
+// allocation (strtod was a third of the decoder's time).
+double number_value(std::string_view code, char letter, size_t j, size_t& end) {
   const size_t number_start = j;
   if (j < code.size() && (code[j] == '+' || code[j] == '-')) ++j;
   const size_t digits_start = j;
@@ -96,11 +97,12 @@ Word number_word(std::string_view code, char letter, size_t j, size_t& end) {
   if (!std::isfinite(value))
     throw LineError{std::string("number '") + printable(number, 24) + "' after '" + letter + "' is out of range"};
   end = j;
-  return Word{letter, value, number, std::string()};
+  return value;
 }
 
-// The word starting at code[i], an address letter; `i` moves past it.
-Word read_word(std::string_view code, size_t& i) {
+// The word starting at code[i], an address letter, onto `words`; `i`
+// moves past it.
+void read_word(std::string_view code, size_t& i, std::vector<Word>& words) {
   const char letter = upper(code[i]);
   size_t j = i + 1;
   while (j < code.size() && is_blank(code[j])) ++j;
@@ -108,12 +110,16 @@ Word read_word(std::string_view code, size_t& i) {
   if (j < code.size() && code[j] == '[') {
     if (std::optional<Word> word = axis_command_word(code, letter, i, j, end)) {
       i = end;
-      return *word;
+      words.push_back(std::move(*word));
+      return;
     }
   }
-  Word word = number_word(code, letter, j, end);
+  const double value = number_value(code, letter, j, end);
+  Word& word = words.emplace_back();  // in place: most words are numbers
+  word.letter = letter;
+  word.value = value;
+  word.written = code.substr(j, end - j);
   i = end;
-  return word;
 }
 
 }  // namespace
@@ -229,7 +235,7 @@ void split_words(std::string_view code, std::vector<Word>& words) {
     }
     if (c == '#' || c == '$') throw unsupported_command(code, i);
     if (!is_letter(static_cast<char>(c))) throw LineError{std::string("unexpected character '") + code[i] + "'"};
-    words.push_back(read_word(code, i));
+    read_word(code, i, words);
   }
 }
 

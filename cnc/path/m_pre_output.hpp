@@ -32,6 +32,8 @@ class MPreOutput : public BlockSource {
   size_t blocks_held() const { return held_.size(); }
 
  private:
+  // The next block from upstream into held_; false at its end.
+  bool take_next();
   void add(Block&& block);
   void release_final();
 
