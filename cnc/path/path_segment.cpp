@@ -185,13 +185,23 @@ std::vector<double> PathSegment::tangent(double s) const {
       for (double& x : t) x = -x;
     return t;
   }
-  std::vector<double> t = unit_;
+  std::vector<double> t(unit_.size());
+  tangent(s, t.data());
+  return t;
+}
+
+void PathSegment::tangent(double s, double* t) const {
+  if (joint_) {
+    const std::vector<double> curve_t = tangent(s);
+    std::copy(curve_t.begin(), curve_t.end(), t);
+    return;
+  }
+  std::copy(unit_.begin(), unit_.end(), t);
   if (arc_) {
     const double angle = angle_at(s);
     t[ix_] = -direction_ * planar_ * std::sin(angle);
     t[iy_] = direction_ * planar_ * std::cos(angle);
   }
-  return t;
 }
 
 std::vector<double> PathSegment::curvature(double s) const {
