@@ -138,15 +138,15 @@ bool may_have_control(std::string_view line) {
   constexpr uint64_t ones = 0x0101010101010101, highs = 0x8080808080808080;
   auto has_below = [&](uint64_t x, uint64_t n) { return ((x - ones * n) & ~x & highs) != 0; };  // a byte < n (n <= 128)
   auto has_byte = [&](uint64_t x, uint64_t b) { return has_below(x ^ (ones * b), 1); };
-  size_t i = 0;
-  for (; i + 8 <= line.size(); i += 8) {
+  auto bad = [&](size_t i) {
     uint64_t x;
     std::memcpy(&x, line.data() + i, 8);
-    if (has_below(x, 0x20) || has_byte(x, 0x7f)) return true;
-  }
-  for (; i < line.size(); ++i)
-    if (is_control(line[i])) return true;
-  return false;
+    return has_below(x, 0x20) || has_byte(x, 0x7f);
+  };
+  if (line.size() < 8) return std::any_of(line.begin(), line.end(), [](char c) { return is_control(c); });
+  for (size_t i = 0; i + 8 <= line.size(); i += 8)
+    if (bad(i)) return true;
+  return bad(line.size() - 8);  // the last 8 bytes: the rest, overlapping
 }
 }  // namespace
 
