@@ -13,6 +13,7 @@
 #include "coordinate_system.hpp"
 #include "machine_config.hpp"
 #include "parameter_expression.hpp"
+#include "words.hpp"
 
 namespace hil::cnc::decoding {
 
@@ -34,6 +35,15 @@ struct LiftRange {
   LiftStart start;          // as programmed (#FLUSH changes the block's copy, not this one)
   size_t block_index = 0;   // the block holding it among the decoded blocks
   int64_t nc_line = 0;      // its line, for messages
+};
+
+// What decode_line refills for every line, kept so that a plain block
+// allocates nothing for them (issue 17: decode speed). Nothing in them
+// carries over from one line to the next.
+struct LineBuffers {
+  std::string code;                                // a line without its comments, if it had any
+  std::vector<Word> words;                         // the line's words, viewing the line or `code`
+  std::vector<std::optional<double>> axis_words;   // per machine axis
 };
 
 struct DecoderState {
@@ -69,6 +79,7 @@ struct DecoderState {
     table.fill(-1);
     return table;
   }();
+  LineBuffers buffers;
 
   // The V.G. variables an expression of this line reads.
   VariableValues variables() const { return {{"V.G.LIFT_ACTIVE", lift ? 1.0 : 0.0}}; }

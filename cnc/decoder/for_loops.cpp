@@ -66,6 +66,7 @@ constexpr size_t max_depth = 100;
 }  // namespace
 
 std::optional<size_t> ForLoops::control_flow(LineStore& lines, size_t i, ParameterValues& parameters) {
+  if (lines[i].find('$') == std::string_view::npos) return std::nullopt;  // plain blocks: before any set-up
   std::string code;
   LineCursor after{std::string_view()};
   switch (loop_keyword(lines[i], code, after)) {

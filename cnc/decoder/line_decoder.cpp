@@ -18,7 +18,8 @@ namespace {
 // What the words of a block program: G92 and the motion act only once all
 // of them are read.
 struct BlockWords {
-  std::vector<std::optional<double>> axes;  // per machine axis
+  explicit BlockWords(std::vector<std::optional<double>>& axis_words) : axes(axis_words) {}
+  std::vector<std::optional<double>>& axes;  // per machine axis (DecoderState::buffers, refilled)
   std::optional<double> i, j;               // arc centre
   std::optional<MotionType> motion;         // G00..G03 of this block
   bool position_preset = false;             // G92: the axis words name the current position
@@ -28,7 +29,7 @@ struct BlockWords {
 
 int axis_of(const Word& w, const DecoderState& state) {
   const int axis = state.axis_of_letter(w.letter);
-  if (axis < 0) throw LineError{"'" + w.text + "': " + w.letter + " is not an axis of this machine"};
+  if (axis < 0) throw LineError{"'" + w.text() + "': " + w.letter + " is not an axis of this machine"};
   return axis;
 }
 
@@ -51,7 +52,7 @@ void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
     modal.centre_correction = g == 165;
   } else if (g == 60 || g == 61 || g == 260 || g == 261 || g == 359 || g == 360) {
     if (programmed.transition)
-      throw LineError{"G" + std::to_string(*programmed.transition) + " and '" + w.text +
+      throw LineError{"G" + std::to_string(*programmed.transition) + " and '" + w.text() +
                           "': two block transition G functions in one block",
                       20117};
     programmed.transition = g;
@@ -60,7 +61,7 @@ void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
     if (g == 260 && modal.transition == BlockTransition::contour) modal.transition = BlockTransition::standard;
     if (g == 359 && modal.transition == BlockTransition::exact_stop) modal.transition = BlockTransition::standard;
   } else {
-    throw LineError{"G code '" + w.text + "' is not supported yet"};
+    throw LineError{"G code '" + w.text() + "' is not supported yet"};
   }
 }
 
@@ -83,7 +84,7 @@ void add_m_function(const Word& w, const DecoderState& state, Block& block) {
 double feed_mm_s(const Word& w) {
   if (!(w.value >= min_feed_mm_min && w.value <= max_feed_mm_min)) {
     std::ostringstream msg;
-    msg << std::setprecision(10) << "feed '" << w.text << "' is out of range " << min_feed_mm_min << " .. "
+    msg << std::setprecision(10) << "feed '" << w.text() << "' is out of range " << min_feed_mm_min << " .. "
         << max_feed_mm_min << " mm/min";
     throw LineError{msg.str()};
   }
@@ -97,7 +98,7 @@ void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& prog
   }
   switch (w.letter) {
     case 'N':
-      if (!first) throw LineError{"'" + w.text + "' must be the first word of the block"};
+      if (!first) throw LineError{"'" + w.text() + "' must be the first word of the block"};
       block.block_nr = integer_code(w, max_block_nr);
       break;
     case 'G': apply_g_code(w, state.modal, programmed); break;
@@ -114,8 +115,8 @@ void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& prog
 }
 
 BlockWords apply_words(const std::vector<Word>& words, DecoderState& state, Block& block) {
-  BlockWords programmed;
-  programmed.axes.resize(state.machine.axes.size());
+  BlockWords programmed(state.buffers.axis_words);
+  programmed.axes.assign(state.machine.axes.size(), std::nullopt);
   for (size_t k = 0; k < words.size(); ++k) apply_word(words[k], k == 0, state, programmed, block);
   return programmed;
 }
@@ -174,7 +175,7 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
   if (programmed.run) return decode_run(programmed, state, block);
   ModalState& modal = state.modal;
   if (programmed.motion) modal.motion = *programmed.motion;
-  const std::vector<double> target = programmed_target(programmed.axes, state);
+  std::vector<double> target = programmed_target(programmed.axes, state);
   check_position(target, state.machine, "end point");  // after G91, G92 and #CS: each word may be in range, the sum not
   const bool is_arc = modal.motion == MotionType::arc_cw || modal.motion == MotionType::arc_ccw;
   const bool has_centre = programmed.i || programmed.j;
@@ -185,7 +186,7 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
   Motion& m = block.motion;
   m.type = modal.motion;
   m.start = state.position;
-  m.end = target;
+  m.end = std::move(target);
   block.slope = modal.slope;
   // G60 / G61 act on this block's end only (KRN-6).
   block.transition = programmed.transition == 60   ? BlockTransition::exact_stop
@@ -195,11 +196,11 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
   if (m.type != MotionType::rapid && !(modal.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
   m.feed = modal.feed;  // G00 too: a short cut to its end runs at it (DDTG-2)
   if (is_arc) set_arc_centre(m, programmed.i, programmed.j, state);
-  state.position = target;
+  state.position = m.end;
 }
 
 // A '#' command is the whole block, after an optional N number.
-void decode_command_block(const std::string& code, size_t hash, DecoderState& state, Block& block) {
+void decode_command_block(std::string_view code, size_t hash, DecoderState& state, Block& block) {
   const std::vector<Word> before = split_words(code.substr(0, hash));
   const bool n_only =
       before.empty() || (before.size() == 1 && before[0].letter == 'N' && !before[0].is_axis_command());
@@ -216,7 +217,7 @@ struct AssignmentTarget {
 
 // P<n> or V.G.M_FCT[<m>].PRE_OUTP_PATH after an optional N number, and
 // nothing else; either number out of range is none.
-AssignmentTarget assignment_target(const std::string& left) {
+AssignmentTarget assignment_target(std::string_view left) {
   LineCursor cursor(left);
   cursor.skip_block_nr();
   AssignmentTarget target;
@@ -235,14 +236,14 @@ AssignmentTarget assignment_target(const std::string& left) {
 // P<n> = <expression> (a decoder variable) or
 // V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm> (P-CHAN-00070 for M<m> from here
 // on), after an optional N number. Decoder work: no block.
-void assign_parameter(const std::string& code, size_t equals, DecoderState& state) {
+void assign_parameter(std::string_view code, size_t equals, DecoderState& state) {
   const AssignmentTarget target = assignment_target(code.substr(0, equals));
   if (!target.parameter && !target.m_function)
     throw LineError{"'=' is only allowed in P<n> = <expression> (n 0.." + std::to_string(max_p_parameter) +
                     ") and V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm>"};
   double value = 0;
   try {
-    value = state.evaluate(code.substr(equals + 1));
+    value = state.evaluate(std::string(code.substr(equals + 1)));
   } catch (const std::invalid_argument& e) {
     throw LineError{e.what()};
   }
@@ -258,13 +259,13 @@ void assign_parameter(const std::string& code, size_t equals, DecoderState& stat
 
 bool decode_line(std::string_view line, int64_t line_nr, int64_t lines_read, DecoderState& state,
                  std::vector<Block>& out) {
-  const std::string code = strip_comments(line);
+  const std::string_view code = without_comments(line, state.buffers.code);
   const size_t first = code.find_first_not_of(" \t\r");
   if (first == std::string::npos || code[first] == '%') return true;  // empty, or the program name
-  Block block;
-  block.nc_line = line_nr;
-  block.block_count = lines_read;
   if (const size_t hash = code.find('#'); hash != std::string::npos) {
+    Block block;
+    block.nc_line = line_nr;
+    block.block_count = lines_read;
     decode_command_block(code, hash, state, block);
     const bool lift = block.lift_start || block.lift_end;
     if (block.has_command()) out.push_back(std::move(block));
@@ -276,14 +277,25 @@ bool decode_line(std::string_view line, int64_t line_nr, int64_t lines_read, Dec
     assign_parameter(code, equals, state);
     return true;
   }
-  const std::vector<Word> words = split_words(code);
-  const BlockWords programmed = apply_words(words, state, block);
-  // G92's M functions (and M30) are the block's, as with any other block.
-  if (programmed.position_preset) preset_position(programmed, state);
-  else decode_motion(programmed, state, block);
-  finish_lift_block(words, programmed.axes, programmed.position_preset, state, block);
+  split_words(code, state.buffers.words);
+  const std::vector<Word>& words = state.buffers.words;
+  // Made in place (a Block is large to move), taken back if the line turns
+  // out to command nothing or to be in error.
+  Block& block = out.emplace_back();
+  block.nc_line = line_nr;
+  block.block_count = lines_read;
+  try {
+    const BlockWords programmed = apply_words(words, state, block);
+    // G92's M functions (and M30) are the block's, as with any other block.
+    if (programmed.position_preset) preset_position(programmed, state);
+    else decode_motion(programmed, state, block);
+    finish_lift_block(words, programmed.axes, programmed.position_preset, state, block);
+  } catch (...) {
+    out.pop_back();
+    throw;
+  }
   const bool lift = block.lift_start || block.lift_end, end = block.program_end;
-  if (block.has_motion || block.has_command()) out.push_back(std::move(block));
+  if (!block.has_motion && !block.has_command()) out.pop_back();
   if (lift) record_lift_block(state, out);
   return !end;
 }

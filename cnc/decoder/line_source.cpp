@@ -1,6 +1,7 @@
 #include "line_source.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -14,9 +15,39 @@ bool StringLines::next_line(std::string_view& line) {
   return true;
 }
 
+namespace {
+constexpr size_t stream_chunk = 64 * 1024;
+}  // namespace
+
+bool StreamLines::read_more() {
+  if (!in_ || !*in_) return false;
+  buffer_.erase(0, begin_);  // the line handed out last is done with
+  begin_ = 0;
+  const size_t kept = buffer_.size();
+  buffer_.resize(kept + stream_chunk);
+  in_->read(buffer_.data() + kept, static_cast<std::streamsize>(stream_chunk));
+  buffer_.resize(kept + static_cast<size_t>(in_->gcount()));
+  return buffer_.size() > kept;
+}
+
 bool StreamLines::next_line(std::string_view& line) {
-  if (!in_ || !std::getline(*in_, buffer_)) return false;
-  line = buffer_;
+  size_t searched = begin_;
+  for (;;) {
+    const void* found = std::memchr(buffer_.data() + searched, '\n', buffer_.size() - searched);
+    if (found) {
+      const size_t end = static_cast<size_t>(static_cast<const char*>(found) - buffer_.data());
+      line = std::string_view(buffer_.data() + begin_, end - begin_);
+      begin_ = end + 1;
+      return true;
+    }
+    const size_t searched_chars = buffer_.size() - begin_;
+    if (!read_more()) break;
+    searched = searched_chars;  // read_more moved the rest to the front
+  }
+  // The last line without '\n'; none if nothing is left (getline's failbit).
+  if (begin_ == buffer_.size()) return false;
+  line = std::string_view(buffer_.data() + begin_, buffer_.size() - begin_);
+  begin_ = buffer_.size();
   return true;
 }
 

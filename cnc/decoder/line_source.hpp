@@ -34,15 +34,20 @@ class StringLines : public LineSource {
   size_t pos_ = 0;
 };
 
-// Lines of a stream (a file), read one at a time.
+// Lines of a stream (a file), as std::getline splits them. Read in chunks
+// and split with memchr: getline took a fifth of a plain block's decoding.
 class StreamLines : public LineSource {
  public:
   explicit StreamLines(std::unique_ptr<std::istream> in) : in_(std::move(in)) {}
   bool next_line(std::string_view& line) override;
 
  private:
+  // Reads on into buffer_ behind what is not split yet; false at the end.
+  bool read_more();
+
   std::unique_ptr<std::istream> in_;
-  std::string buffer_;
+  std::string buffer_;  // [begin_, buffer_.size()): read, not handed out yet
+  size_t begin_ = 0;
 };
 
 // What a program start reads: a new LineSource over the program's text each time.

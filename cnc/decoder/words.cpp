@@ -6,8 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <optional>
 #include <sstream>
+
+#include "short_decimal.hpp"
 
 namespace hil::cnc::decoding {
 namespace {
@@ -29,7 +32,7 @@ std::string hex_code(char c) {
 }
 
 // The ']' that closes the '[' at code[open] (expressions nest them), or npos.
-size_t closing_bracket(const std::string& code, size_t open) {
+size_t closing_bracket(std::string_view code, size_t open) {
   int depth = 0;
   for (size_t i = open; i < code.size(); ++i) {
     if (code[i] == '[') ++depth;
@@ -47,7 +50,7 @@ bool names_command(const std::string& content) {
 
 // Z[LIFT_START POS=40]: the word from its letter at code[i] to the ']'
 // closing the '[' at code[open]; none if the brackets hold no command.
-std::optional<Word> axis_command_word(const std::string& code, char letter, size_t i, size_t open, size_t& end) {
+std::optional<Word> axis_command_word(std::string_view code, char letter, size_t i, size_t open, size_t& end) {
   const size_t close = closing_bracket(code, open);
   const std::string content =
       upper_words(code.substr(open + 1, close == std::string::npos ? std::string::npos : close - open - 1));
@@ -55,56 +58,51 @@ std::optional<Word> axis_command_word(const std::string& code, char letter, size
   if (close == std::string::npos)
     throw LineError{std::string("axis command '") + letter + "[" + command_keyword(content) + "' has no closing ']'"};
   end = close + 1;
-  return Word{letter, 0.0, printable(code.substr(i, end - i), 60), content};
+  return Word{letter, 0.0, code.substr(i, end - i), content};
 }
 
-// The word of `letter` whose number starts at code[j]. std::from_chars:
-// no locale, no allocation (strtod was a third of the decoder's time).
-Word number_word(const std::string& code, char letter, size_t j, size_t& end) {
+// The value of the number of `letter` that starts at code[j]; `end` after
+// it. std::from_chars where read_decimal_digits has none: no locale, no
+// allocation (strtod was a third of the decoder's time).
+double number_value(std::string_view code, char letter, size_t j, size_t& end) {
   const size_t number_start = j;
   if (j < code.size() && (code[j] == '+' || code[j] == '-')) ++j;
   const size_t digits_start = j;
-  bool digits = false;
-  while (j < code.size() && (is_digit(code[j]) || code[j] == '.')) {
-    digits = digits || code[j] != '.';
-    ++j;
-  }
+  const DecimalDigits read = read_decimal_digits(code.data() + j, code.data() + code.size());
+  j = static_cast<size_t>(read.end - code.data());
   const std::string_view number(code.data() + number_start, j - number_start);
-  if (!digits) throw LineError{std::string("address '") + letter + "' needs a number"};
+  if (!read.has_digit) throw LineError{std::string("address '") + letter + "' needs a number"};
   // X1e5 would read as X1 and an address E: say what is wrong instead.
   if (j + 1 < code.size() && (code[j] == 'e' || code[j] == 'E') &&
       (is_digit(code[j + 1]) || code[j + 1] == '+' || code[j + 1] == '-'))
     throw LineError{std::string("'") + letter + printable(number, 24) + code[j] +
                     "..': words take decimal numbers, no exponent"};
   // from_chars takes no '+'; the sign is applied after.
+  const std::string_view unsigned_number(code.data() + digits_start, j - digits_start);
   double value = 0;
-  const char* const last = code.data() + j;
-  const std::from_chars_result parsed = std::from_chars(code.data() + digits_start, last, value);
-  if (parsed.ptr != last || (parsed.ec != std::errc() && parsed.ec != std::errc::result_out_of_range))
-    throw LineError{std::string("malformed number '") + printable(number, 24) + "' after '" + letter + "'"};
-  if (parsed.ec == std::errc::result_out_of_range) {
-    // Beyond a double either way: as strtod has it (too large: infinite,
-    // below the smallest: 0 or a denormal), rare enough to copy for.
-    value = std::strtod(std::string(code.data() + digits_start, j - digits_start).c_str(), nullptr);
+  if (read.value) {
+    value = *read.value;
+  } else {
+    const char* const last = code.data() + j;
+    const std::from_chars_result parsed = std::from_chars(code.data() + digits_start, last, value);
+    if (parsed.ptr != last || (parsed.ec != std::errc() && parsed.ec != std::errc::result_out_of_range))
+      throw LineError{std::string("malformed number '") + printable(number, 24) + "' after '" + letter + "'"};
+    if (parsed.ec == std::errc::result_out_of_range) {
+      // Beyond a double either way: as strtod has it (too large: infinite,
+      // below the smallest: 0 or a denormal), rare enough to copy for.
+      value = std::strtod(std::string(unsigned_number).c_str(), nullptr);
+    }
   }
   if (code[number_start] == '-') value = -value;
   if (!std::isfinite(value))
     throw LineError{std::string("number '") + printable(number, 24) + "' after '" + letter + "' is out of range"};
   end = j;
-  // Digits, '.' and a sign: only a long number needs printable (this runs for every word).
-  Word word{letter, value, std::string(), std::string()};
-  if (number.size() <= 24) {
-    word.text.reserve(number.size() + 1);
-    word.text += letter;
-    word.text += number;
-  } else {
-    word.text = letter + printable(number, 24);
-  }
-  return word;
+  return value;
 }
 
-// The word starting at code[i], an address letter; `i` moves past it.
-Word read_word(const std::string& code, size_t& i) {
+// The word starting at code[i], an address letter, onto `words`; `i`
+// moves past it.
+void read_word(std::string_view code, size_t& i, std::vector<Word>& words) {
   const char letter = upper(code[i]);
   size_t j = i + 1;
   while (j < code.size() && is_blank(code[j])) ++j;
@@ -112,17 +110,48 @@ Word read_word(const std::string& code, size_t& i) {
   if (j < code.size() && code[j] == '[') {
     if (std::optional<Word> word = axis_command_word(code, letter, i, j, end)) {
       i = end;
-      return *word;
+      words.push_back(std::move(*word));
+      return;
     }
   }
-  Word word = number_word(code, letter, j, end);
+  const double value = number_value(code, letter, j, end);
+  Word& word = words.emplace_back();  // in place: most words are numbers
+  word.letter = letter;
+  word.value = value;
+  word.written = code.substr(j, end - j);
   i = end;
-  return word;
 }
 
 }  // namespace
 
+std::string Word::text() const {
+  if (is_axis_command()) return printable(written, 60);
+  // Digits, '.' and a sign: only a long number needs printable.
+  if (written.size() <= 24) return letter + std::string(written);
+  return letter + printable(written, 24);
+}
+
+namespace {
+// Whether `line` may hold a control character, 8 bytes at a time (every
+// line comes here): false means it has none; true also for a tab or a CR.
+bool may_have_control(std::string_view line) {
+  constexpr uint64_t ones = 0x0101010101010101, highs = 0x8080808080808080;
+  auto has_below = [&](uint64_t x, uint64_t n) { return ((x - ones * n) & ~x & highs) != 0; };  // a byte < n (n <= 128)
+  auto has_byte = [&](uint64_t x, uint64_t b) { return has_below(x ^ (ones * b), 1); };
+  auto bad = [&](size_t i) {
+    uint64_t x;
+    std::memcpy(&x, line.data() + i, 8);
+    return has_below(x, 0x20) || has_byte(x, 0x7f);
+  };
+  if (line.size() < 8) return std::any_of(line.begin(), line.end(), [](char c) { return is_control(c); });
+  for (size_t i = 0; i + 8 <= line.size(); i += 8)
+    if (bad(i)) return true;
+  return bad(line.size() - 8);  // the last 8 bytes: the rest, overlapping
+}
+}  // namespace
+
 void check_characters(std::string_view line) {
+  if (!may_have_control(line)) return;
   const auto bad = std::find_if(line.begin(), line.end(), [](char c) { return is_control(c) && c != '\t' && c != '\r'; });
   if (bad == line.end()) return;
   throw LineError{"control character " + hex_code(*bad) + " in column " + std::to_string(bad - line.begin() + 1) +
@@ -148,9 +177,22 @@ std::string printable(std::string_view text, size_t max_bytes) {
 
 std::string command_keyword(const std::string& command) { return command.substr(0, command.find_first_of(" =")); }
 
+namespace {
+// Two memchr (vectorised) over the line; find_first_of calls memchr per character.
+bool has_comment(std::string_view line) {
+  return line.find(';') != std::string_view::npos || line.find('(') != std::string_view::npos;
+}
+}  // namespace
+
+std::string_view without_comments(std::string_view line, std::string& storage) {
+  if (!has_comment(line)) return line;
+  storage = strip_comments(line);
+  return storage;
+}
+
 std::string strip_comments(std::string_view line) {
-  // Most lines have no comment (string_view::find_first_of calls memchr per character).
-  if (std::none_of(line.begin(), line.end(), [](char c) { return c == ';' || c == '('; })) return std::string(line);
+  // Most lines have no comment.
+  if (!has_comment(line)) return std::string(line);
   std::string out;
   bool in_paren = false;
   for (char c : line) {
@@ -169,14 +211,21 @@ std::string strip_comments(std::string_view line) {
   return out;
 }
 
-LineError unsupported_command(const std::string& code, size_t i) {
+LineError unsupported_command(std::string_view code, size_t i) {
   const size_t end = code.find_first_of(" \t[", i);
-  return LineError{"command '" + code.substr(i, end - i) + "' is not supported yet"};
+  return LineError{"command '" + std::string(code.substr(i, end == std::string_view::npos ? end : end - i)) +
+                   "' is not supported yet"};
 }
 
-std::vector<Word> split_words(const std::string& code) {
+std::vector<Word> split_words(std::string_view code) {
   std::vector<Word> words;
   words.reserve(8);
+  split_words(code, words);
+  return words;
+}
+
+void split_words(std::string_view code, std::vector<Word>& words) {
+  words.clear();
   size_t i = 0;
   while (i < code.size()) {
     const unsigned char c = static_cast<unsigned char>(code[i]);
@@ -186,20 +235,19 @@ std::vector<Word> split_words(const std::string& code) {
     }
     if (c == '#' || c == '$') throw unsupported_command(code, i);
     if (!is_letter(static_cast<char>(c))) throw LineError{std::string("unexpected character '") + code[i] + "'"};
-    words.push_back(read_word(code, i));
+    read_word(code, i, words);
   }
-  return words;
 }
 
 int64_t integer_code(const Word& w, int64_t max) {
   // Compared as doubles: the cast of a number beyond int64_t is undefined.
   if (w.value != std::floor(w.value) || w.value < 0 || w.value > static_cast<double>(max))
-    throw LineError{"'" + w.text + "' needs a whole number 0.." + std::to_string(max)};
+    throw LineError{"'" + w.text() + "' needs a whole number 0.." + std::to_string(max)};
   return static_cast<int64_t>(w.value);
 }
 
-std::string upper_words(const std::string& text) {
-  std::istringstream in(text);
+std::string upper_words(std::string_view text) {
+  std::istringstream in{std::string(text)};
   std::string word, out;
   while (in >> word) {
     for (char& c : word) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -208,7 +256,8 @@ std::string upper_words(const std::string& text) {
   return out;
 }
 
-size_t find_assignment(const std::string& code) {
+size_t find_assignment(std::string_view code) {
+  if (code.find('=') == std::string_view::npos) return std::string::npos;  // memchr: most lines
   for (size_t i = 0; i < code.size(); ++i) {
     if (code[i] == '=') return i;
     if (code[i] == '[') {

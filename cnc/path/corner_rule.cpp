@@ -13,6 +13,27 @@ constexpr double tangent_round_off = 1e-12;
 // path it joins, differ by round-off relative to their size.
 constexpr double curvature_round_off = 1e-9;
 
+// Whether the tangents agree where `before` meets `after`. On the stack for
+// up to 16 axes: the corner rule runs at every block transition, and most
+// of a polyline's are corners.
+bool same_tangent(const PathSegment& before, const PathSegment& after) {
+  const size_t axes = before.end().size();
+  double stack[2][16];
+  std::vector<double> heap;
+  double* t1 = stack[0];
+  double* t2 = stack[1];
+  if (axes > 16) {
+    heap.resize(2 * axes);
+    t1 = heap.data();
+    t2 = heap.data() + axes;
+  }
+  before.tangent(before.length(), t1);
+  after.tangent(0, t2);
+  for (size_t i = 0; i < axes; ++i)
+    if (std::abs(t2[i] - t1[i]) > tangent_round_off) return false;
+  return true;
+}
+
 double norm(const std::vector<double>& v) {
   double sum = 0;
   for (double x : v) sum += x * x;
@@ -28,14 +49,13 @@ double curvature_step_velocity(double dk, double kappa, double j_max, double cyc
 }
 
 Junction junction(const PathSegment& before, const PathSegment& after, const MachineConfig& machine) {
-  const std::vector<double> t1 = before.tangent(before.length()), t2 = after.tangent(0);
+  if (!same_tangent(before, after)) return {0.0, false};
+  // A corner needs no curvatures.
   const std::vector<double> k1 = before.curvature(before.length()), k2 = after.curvature(0);
   Junction j{std::min(before.limits().v, after.limits().v), false};
-  for (size_t i = 0; i < t1.size(); ++i)
-    if (std::abs(t2[i] - t1[i]) > tangent_round_off) return {0.0, false};
   const double kappa = std::max(norm(k1), norm(k2));
   const double cycle = machine.cycle_time_s();
-  for (size_t i = 0; i < t1.size(); ++i) {
+  for (size_t i = 0; i < k1.size(); ++i) {
     // An axis along the tangent has no share of the curvature but round-off.
     const double dk = std::abs(k2[i] - k1[i]);
     if (dk <= curvature_round_off * kappa) continue;

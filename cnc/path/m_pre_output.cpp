@@ -65,7 +65,7 @@ bool insert_pre_output(std::deque<Block>& out, const MFunction& m, const Block& 
 
 }  // namespace
 
-void MPreOutput::add(Block block) {
+void MPreOutput::add(Block&& block) {
   std::vector<MFunction> stay;
   for (const MFunction& m : block.m_functions) {
     if (m.pre_output_mm <= 0) {
@@ -105,16 +105,43 @@ void MPreOutput::release_final() {
   }
 }
 
+// Read in place at held_'s back (a Block is large to move); one with an M
+// function to pre-output goes through add, which looks at the blocks before it.
+bool MPreOutput::take_next() {
+  Block& in = held_.emplace_back();
+  bool read = false;
+  try {
+    read = upstream_.next(in);
+  } catch (...) {
+    held_.pop_back();
+    throw;
+  }
+  if (!read) {
+    held_.pop_back();
+    return false;
+  }
+  if (std::any_of(in.m_functions.begin(), in.m_functions.end(), [](const MFunction& m) { return m.pre_output_mm > 0; })) {
+    Block block = std::move(in);
+    held_.pop_back();
+    add(std::move(block));
+    return true;
+  }
+  if (!(in.has_motion || in.has_command())) {
+    held_.pop_back();
+    return true;
+  }
+  if (in.has_motion) ++motion_held_;
+  return true;
+}
+
 bool MPreOutput::next(Block& block) {
   while (final_ == 0) {
-    Block in;
-    if (ended_ || !upstream_.next(in)) {
+    if (ended_ || !take_next()) {
       ended_ = true;
       if (held_.empty()) return false;
       final_ = held_.size();
       break;
     }
-    add(std::move(in));
     release_final();
   }
   block = std::move(held_.front());

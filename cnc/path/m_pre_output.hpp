@@ -32,7 +32,9 @@ class MPreOutput : public BlockSource {
   size_t blocks_held() const { return held_.size(); }
 
  private:
-  void add(Block block);
+  // The next block from upstream into held_; false at its end.
+  bool take_next();
+  void add(Block&& block);
   void release_final();
 
   BlockSource& upstream_;

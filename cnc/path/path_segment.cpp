@@ -8,6 +8,10 @@ namespace hil::cnc {
 namespace {
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double two_pi = 2 * M_PI;
+// X, Y or Z, without std::string's compare (every block asks, for every axis).
+bool is_main_axis(const std::string& name) {
+  return name.size() == 1 && (name[0] == 'X' || name[0] == 'Y' || name[0] == 'Z');
+}
 }  // namespace
 
 PathSegment::PathSegment(const Motion& m, const MachineConfig& machine)
@@ -82,8 +86,7 @@ void PathSegment::set_contour_limits(const MachineConfig& machine, double progra
 void PathSegment::set_covered_distance(const MachineConfig& machine) {
   double main_sq = 0, leading_time = 0, leading_travel = 0;
   for (size_t i = 0; i < start_.size(); ++i) {
-    const std::string& name = machine.axes[i].name;
-    const bool main_axis = name == "X" || name == "Y" || name == "Z";
+    const bool main_axis = is_main_axis(machine.axes[i].name);
     const bool on_circle = static_cast<int>(i) == ix_ || static_cast<int>(i) == iy_;
     const double travel = on_circle ? 0 : std::abs(end_[i] - start_[i]);
     if (main_axis) main_sq += travel * travel;
@@ -182,13 +185,23 @@ std::vector<double> PathSegment::tangent(double s) const {
       for (double& x : t) x = -x;
     return t;
   }
-  std::vector<double> t = unit_;
+  std::vector<double> t(unit_.size());
+  tangent(s, t.data());
+  return t;
+}
+
+void PathSegment::tangent(double s, double* t) const {
+  if (joint_) {
+    const std::vector<double> curve_t = tangent(s);
+    std::copy(curve_t.begin(), curve_t.end(), t);
+    return;
+  }
+  std::copy(unit_.begin(), unit_.end(), t);
   if (arc_) {
     const double angle = angle_at(s);
     t[ix_] = -direction_ * planar_ * std::sin(angle);
     t[iy_] = direction_ * planar_ * std::cos(angle);
   }
-  return t;
 }
 
 std::vector<double> PathSegment::curvature(double s) const {

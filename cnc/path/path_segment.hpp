@@ -45,6 +45,9 @@ class PathSegment {
   // Axis positions at path length s; first and second derivatives by s.
   std::vector<double> position(double s) const;
   std::vector<double> tangent(double s) const;
+  // The same into t[0 .. axes): without allocating, for the corner rule
+  // at every block transition.
+  void tangent(double s, double* t) const;
   std::vector<double> curvature(double s) const;
 
  private:

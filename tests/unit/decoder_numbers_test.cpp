@@ -6,12 +6,15 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <random>
 #include <sstream>
 
 #include "decoder.hpp"
+#include "short_decimal.hpp"
 #include "test_machine.hpp"
 #include "value_ranges.hpp"
 
@@ -179,4 +182,51 @@ TEST_CASE("KRN-1 KRN-2 decoder fuzz: random bytes and mutated programs never cra
   WARN(3 * inputs << " inputs (random bytes, random NC text, mutated programs: " << inputs << " each); refused: "
                << errors[0] << ", " << errors[1] << ", " << errors[2] << "; " << decoded_blocks << " blocks decoded");
   CHECK(errors[2] < inputs);  // the mutations reach past the first error, too
+}
+
+TEST_CASE("KRN-1 issue 17: a word's number read the short way is the double std::from_chars gives, bit for bit",
+          "[decoder][numbers]") {
+  std::mt19937_64 random(17);
+  auto below = [&](size_t n) { return std::uniform_int_distribution<size_t>(0, n - 1)(random); };
+  int short_way = 0;
+  for (int i = 0; i < 2000000; ++i) {
+    // Digits and '.' (sometimes two, or at either end), then a character that ends the number.
+    std::string text;
+    const size_t digits = 1 + below(i % 4 == 0 ? 25 : 16);
+    for (size_t k = 0; k < digits; ++k) text += static_cast<char>('0' + (below(4) == 0 ? 9 : below(10)));
+    for (size_t points = below(8) == 0 ? 2 : 1; points > 0; --points)
+      if (below(10) > 0) text.insert(below(text.size() + 1), ".");
+    const std::string line = text + (below(2) ? " X1" : "");
+    const DecimalDigits read = read_decimal_digits(line.data(), line.data() + line.size());
+    INFO(line);
+    REQUIRE(read.end == line.data() + text.size());
+    REQUIRE(read.has_digit == (text.find_first_of("0123456789") != std::string::npos));
+    if (!read.value) continue;
+    ++short_way;
+    double expected = 0;
+    const std::from_chars_result parsed = std::from_chars(text.data(), text.data() + text.size(), expected);
+    REQUIRE(parsed.ptr == text.data() + text.size());
+    REQUIRE(std::memcmp(&*read.value, &expected, sizeof expected) == 0);
+  }
+  CHECK(short_way > 1000000);
+  // Through the decoder: every word's value, the short way or not.
+  const MachineConfig machine = test::xyz_machine();
+  for (const char* number : {"0.1", "1234567.125", "999999.9999999999", "0.000000000000001", "0.0000000000000001",
+                             "123456789012345", "1234567890123456", "000000000000000000001.5", "5.", ".5", "-.25",
+                             "+12.5", "-0"}) {
+    const DecodedProgram p = decode_program(std::string("G01 F") + number + "\n", machine, {0, 0, 0});
+    std::string_view digits(number);
+    const bool negative = digits[0] == '-';
+    if (digits[0] == '+' || digits[0] == '-') digits.remove_prefix(1);
+    double expected = 0;
+    std::from_chars(digits.data(), digits.data() + digits.size(), expected);
+    if (negative) expected = -expected;
+    INFO(number);
+    const bool in_range = expected >= min_feed_mm_min && expected <= max_feed_mm_min;
+    REQUIRE(p.error.has_value() != in_range);
+    if (!in_range) continue;
+    const DecodedProgram q = decode_program(std::string("G01 X0.001 F") + number + "\n", machine, {0, 0, 0});
+    REQUIRE(q.blocks.size() == 1);
+    CHECK(q.blocks[0].motion.feed == expected / 60.0);
+  }
 }
