@@ -119,6 +119,9 @@ struct Scenario {
   std::vector<EventExpectation> expected_events;
   std::vector<ViolationExpectation> expected_violations;
   bool allow_errors = false;   // unexpected error events fail the run unless true
+  // RIG-6: the CNC ticks on the wall clock and never waits for answers
+  // (docs/REALTIME.md); false: lock-step.
+  bool realtime = false;
 
   YAML::Node resolved;  // the whole scenario, machine and NC program inline
 };
