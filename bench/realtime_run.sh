@@ -47,7 +47,7 @@ trips=$(( (duration + 3) / 4 ))
 
 echo "machine: $(nproc) CPUs, $(uname -r), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "real time for ~${duration} s: $trips round trips, the lock-step nodes on CPU $cpu"
+echo "real time for ~${duration} s: $trips round trips, the cnc, drives and PLC on CPU $cpu"
 status=0
 "$bin/hil" run "$work/realtime_run.yaml" --out "$work/run" --cpu "$cpu" > "$work/report" 2>&1 || status=$?
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -120,7 +120,9 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
   }
   nodes.push_back(std::make_unique<Process>("plc_sim", node_args("plc_sim"), node_output("plc_sim"), lock_step));
   Process cnc("cnc", node_args("cnc"), node_output("cnc"), lock_step);
-  placed = cpu >= 0 ? ", the lock-step nodes on CPU " + std::to_string(cpu) : "";
+  placed = cpu >= 0 ? std::string(scenario.realtime ? ", the cycle nodes on CPU " : ", the lock-step nodes on CPU ") +
+                          std::to_string(cpu)
+                    : "";
   if (options.fifo_priority > 0)
     placed += cnc.fifo_refused().empty() ? ", SCHED_FIFO " + std::to_string(options.fifo_priority)
                                          : ", normal scheduling (SCHED_FIFO refused: " + cnc.fifo_refused() + ")";
