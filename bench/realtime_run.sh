@@ -7,11 +7,15 @@
 # the machine. The goal (issue 18): 0 missed ticks, p99 jitter <= 100 us.
 # Asserts nothing; the figures go into docs/PERFORMANCE.md.
 # Usage (as root, for the private network namespace and SCHED_FIFO):
-#   scripts/in_netns.sh bench/realtime_run.sh [DURATION_S] [build/bin] [CPU]
+#   scripts/in_netns.sh bench/realtime_run.sh [DURATION_S] [build/bin] [CPU] [poll]
+# "poll": hold /dev/cpu_dma_latency at 0 while the run lasts (PM QoS, as
+# cyclictest does): an idle CPU then polls instead of halting, so a timer
+# wakes it without a halt and a VM exit. Every idle CPU then spins.
 set -eu
 duration=${1:-600}
 bin=$(cd "${2:-build/bin}" && pwd)
 cpu=${3:-1}
+idle=${4:-halt}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -47,6 +51,13 @@ trips=$(( (duration + 3) / 4 ))
 
 echo "machine: $(nproc) CPUs, $(uname -r), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+if [ "$idle" = poll ]; then
+  exec 3>/dev/cpu_dma_latency   # the request holds while the file is open
+  printf '\000\000\000\000' >&3
+  echo "idle: polling (/dev/cpu_dma_latency held at 0 us)"
+else
+  echo "idle: as configured ($(cat /sys/devices/system/cpu/cpuidle/current_driver 2>/dev/null || echo '?'))"
+fi
 echo "real time for ~${duration} s: $trips round trips, the cnc, drives and PLC on CPU $cpu"
 status=0
 "$bin/hil" run "$work/realtime_run.yaml" --out "$work/run" --cpu "$cpu" > "$work/report" 2>&1 || status=$?
