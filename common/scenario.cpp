@@ -25,7 +25,7 @@ const std::vector<std::string> scenario_keys = {"name", "description", "requirem
                                                 "nc_file", "run", "plc", "expect", "expect_events",
                                                 "faults", "fault_seed",
                                                 "expect_violations", "variants", "compare"};
-const std::vector<std::string> run_keys = {"max_time_s", "settle_time_s", "allow_errors"};
+const std::vector<std::string> run_keys = {"max_time_s", "settle_time_s", "allow_errors", "realtime"};
 const std::vector<std::string> plc_keys = {"timeline", "m_function_ack_cycles"};
 const std::vector<std::string> step_keys = {"when", "set"};
 const std::vector<std::string> event_keys = {"id", "parameter", "severity", "nc_line", "count_min", "absent"};
@@ -367,6 +367,7 @@ Scenario read_scenario(const YAML::Node& root, const MachineConfig* machine) {
     run.get("max_time_s", s.max_time_s, Bounds{0, max_run_time_s, true});
     run.get("settle_time_s", s.settle_time_s, Bounds{0, max_run_time_s});
     run.get("allow_errors", s.allow_errors);
+    run.get("realtime", s.realtime);
   }
   if (m.has("plc")) {
     const ConfigMap plc(m["plc"], "plc", plc_keys);

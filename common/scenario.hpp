@@ -121,6 +121,9 @@ struct Scenario {
   std::vector<ViolationExpectation> expected_violations;
   bool allow_errors = false;   // unexpected error events fail the run unless true
   FaultPlan faults;            // RIG-8: what the rig does to the cycle channels
+  // RIG-6: the CNC ticks on the wall clock and never waits for answers
+  // (docs/REALTIME.md); false: lock-step.
+  bool realtime = false;
 
   YAML::Node resolved;  // the whole scenario, machine and NC program inline
 };

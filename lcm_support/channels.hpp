@@ -9,6 +9,8 @@ inline const std::string hli_state = "HLI_STATE";
 inline const std::string event = "HIL_EVENT";
 inline const std::string manifest = "HIL_MANIFEST";
 inline const std::string participant = "HIL_PARTICIPANT";
+// Real-time mode only: the CNC's tick jitter and answer counts (rt_stats_t).
+inline const std::string rt_stats = "HIL_RT_STATS";
 // Written into the log by hil_logger, never sent in a live run.
 inline const std::string scenario = "HIL_SCENARIO";
 inline const std::string log_end = "HIL_LOG_END";

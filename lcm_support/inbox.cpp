@@ -7,6 +7,7 @@
 #include <hil/hli_state_t.hpp>
 #include <hil/log_summary_t.hpp>
 #include <hil/participant_t.hpp>
+#include <hil/rt_stats_t.hpp>
 #include <hil/run_manifest_t.hpp>
 #include <hil/scenario_text_t.hpp>
 
@@ -51,6 +52,7 @@ std::optional<Identity> as_channel_type(const std::string& channel, Read read) {
   if (channel == channels::manifest) return read(Type<hil::run_manifest_t>{});
   if (channel == channels::scenario) return read(Type<hil::scenario_text_t>{});
   if (channel == channels::log_end) return read(Type<hil::log_summary_t>{});
+  if (channel == channels::rt_stats) return read(Type<hil::rt_stats_t>{});
   if (channels::names_an_axis(channel, "_CMD")) return read(Type<hil::axis_setpoint_t>{});
   if (channels::names_an_axis(channel, "_STATE")) return read(Type<hil::axis_state_t>{});
   return std::nullopt;

@@ -7,6 +7,7 @@
 #include <hil/hli_state_t.hpp>
 #include <hil/log_summary_t.hpp>
 #include <hil/participant_t.hpp>
+#include <hil/rt_stats_t.hpp>
 #include <hil/run_manifest_t.hpp>
 #include <hil/scenario_text_t.hpp>
 #include <lcm/lcm-cpp.hpp>
@@ -85,6 +86,7 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
         throw std::runtime_error(path + ": HIL_SCENARIO does not hold a valid scenario: " + ex.what());
       }
       f.scenario = true;
+      f.realtime = log.scenario->realtime;
       const MachineConfig& machine = log.scenario->machine;
       checker = std::make_unique<LimitChecker>(machine);
       log.axes.assign(machine.axes.size(), {});
@@ -96,6 +98,25 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       f.lock_step[channels::hli_control];
       f.expectations = static_cast<int>(log.scenario->expectations.size() + log.scenario->expected_events.size());
       f.faults = log.scenario->faults;
+    } else if (ch == channels::rt_stats) {
+      hil::rt_stats_t m;
+      if (!of_run(m)) continue;
+      RealTimeFigures r;
+      r.messages = (log.real_time ? log.real_time->messages : 0) + 1;
+      r.cycle = m.cycle;
+      r.final = m.is_final;
+      r.cycle_us = m.cycle_us;
+      r.scheduling = m.scheduling;
+      r.ticks = m.ticks;
+      r.overruns = m.overruns;
+      r.jitter_p50_us = m.jitter_p50_us;
+      r.jitter_p99_us = m.jitter_p99_us;
+      r.jitter_max_us = m.jitter_max_us;
+      for (size_t i = 0; i < static_cast<size_t>(std::max<int16_t>(m.n_participants, 0)); ++i)
+        r.participants.push_back({m.name[i], m.in_time[i], m.late[i], m.missing[i], m.out_of_order[i],
+                                  m.duplicate[i], m.longest_gap_cycles[i], m.watchdog_cycles[i]});
+      f.rt_stats_final = f.rt_stats_final || m.is_final;
+      log.real_time = r;
     } else if (ch == channels::log_end) {
       hil::log_summary_t m;
       if (!of_run(m)) continue;

@@ -37,6 +37,23 @@ struct HliTrace {
   std::vector<int> block_search_state;  // block_search.state_r.state (DPS-3)
 };
 
+// RIG-6 real-time mode: the CNC's last statistics (rt_stats_t).
+struct RealTimeFigures {
+  int64_t cycle = 0;
+  bool final = false;
+  int32_t cycle_us = 0;
+  std::string scheduling;  // the cnc's
+  int64_t ticks = 0, overruns = 0;
+  double jitter_p50_us = 0, jitter_p99_us = 0, jitter_max_us = 0;
+  struct Answers {
+    std::string name;
+    int64_t in_time = 0, late = 0, missing = 0, out_of_order = 0, duplicate = 0, longest_gap_cycles = 0,
+            watchdog_cycles = 0;
+  };
+  std::vector<Answers> participants;
+  int64_t messages = 0;  // HIL_RT_STATS messages of the run in the log
+};
+
 struct RunLog {
   std::optional<Scenario> scenario;  // from HIL_SCENARIO
   std::string rig_version;
@@ -46,6 +63,7 @@ struct RunLog {
   std::vector<AxisTrace> axes;  // in the scenario's axis order
   HliTrace hli;
   LogFacts facts;  // whether the log holds the whole run (verdict.hpp)
+  std::optional<RealTimeFigures> real_time;  // the last HIL_RT_STATS, real-time runs only
 };
 
 // Reads `path`: the run of its first manifest (messages of other runs are

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "channels.hpp"
+
 namespace hil::logger {
 namespace {
 
@@ -72,6 +74,12 @@ void check_planned_cycles(const std::string& channel, const std::vector<int64_t>
     problems.push_back(channel + ": " + std::to_string(outside) + " message(s) of a cycle outside 0.." + std::to_string(last));
 }
 
+// The participants' answers (AXIS_<X>_STATE, HLI_CONTROL), as opposed to
+// the CNC's output.
+bool is_answer_channel(const std::string& channel) {
+  return channel == channels::hli_control || !channels::axis_of_state(channel).empty();
+}
+
 }  // namespace
 
 std::vector<std::string> log_problems(const LogFacts& f) {
@@ -80,8 +88,11 @@ std::vector<std::string> log_problems(const LogFacts& f) {
   if (f.manifest && !f.scenario) p.push_back("no scenario (HIL_SCENARIO): the logger did not write it");
   if (!f.sealed) p.push_back("the logger did not close the log (no HIL_LOG_END): it was cut short");
   if (!f.end_cycle) p.push_back("no RUN_END from the cnc");
+  // In real time a participant the watchdog lost that still ended left
+  // nothing out of the log: its loss is an error event of the run.
   for (const auto& [name, cycle] : f.lost)
-    if (!f.faults.touches(name)) p.push_back(name + " went silent: the cnc lost it at cycle " + std::to_string(cycle));
+    if (!f.faults.touches(name) && !(f.realtime && f.ended.count(name)))
+      p.push_back(name + " went silent: the cnc lost it at cycle " + std::to_string(cycle));
   std::vector<std::string> no_end;
   for (const auto& name : f.participants)
     if (!f.ended.count(name) && !f.lost.count(name) && name != "cnc") no_end.push_back(name);
@@ -95,10 +106,13 @@ std::vector<std::string> log_problems(const LogFacts& f) {
                 " datagram(s) at the logger's socket (its receive buffer was full)");
   if (f.end_cycle) {
     for (const auto& [channel, cycles] : f.lock_step) {
+      if (f.realtime && is_answer_channel(channel)) continue;  // missing answers are counted in real time
       if (f.faults.touches_channel(channel)) check_planned_cycles(channel, cycles, *f.end_cycle, f.faults, p);
       else check_cycles(channel, cycles, *f.end_cycle, p);
     }
   }
+  if (f.realtime && f.end_cycle && !f.rt_stats_final)
+    p.push_back("no final real-time statistics (HIL_RT_STATS) from the cnc");
   for (const auto& [who, all] : f.refused) {
     traffic::Ledger ledger;  // without the channels the faults act on
     for (const auto& [channel, counts] : all.by_channel())

@@ -29,8 +29,14 @@ struct LogFacts {
 
   // The cycle of every message on each lock-step channel (AXIS_<X>_CMD,
   // AXIS_<X>_STATE, HLI_STATE, HLI_CONTROL), in log order; each must hold
-  // every cycle 0 .. end_cycle once.
+  // every cycle 0 .. end_cycle once (in real time only the CNC's output).
   std::map<std::string, std::vector<int64_t>> lock_step;
+
+  // RIG-6 real-time mode (the scenario's run.realtime): answers may be late
+  // or missing by nature (counted in the statistics, not a gap in the log);
+  // the log must hold the CNC's final statistics (HIL_RT_STATS).
+  bool realtime = false;
+  bool rt_stats_final = false;
 
   // What was not taken, by who did not take it: "log" (found reading it),
   // "logger" (the seal), and every node (its RUN_END).
@@ -48,7 +54,10 @@ struct LogFacts {
   std::optional<int32_t> verdicts_announced;  // how many plc_sim says it published (its RUN_END)
 };
 
-// Every reason the log does not hold a whole run; empty if it does.
+// Every reason the log does not hold a whole run; empty if it does. In
+// lock-step: every participant's answer for every cycle; in real time:
+// every cycle of the CNC's output, its final statistics. Both: every
+// participant's RUN_END, the log closed by the logger, nothing unreadable.
 std::vector<std::string> log_problems(const LogFacts& facts);
 
 struct ProcessExit {

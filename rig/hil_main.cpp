@@ -32,7 +32,7 @@ int check_log(const std::string& path, const std::string& plot_dir) {
   }
   std::cout << "log " << path << ": " << (log.scenario ? log.scenario->name : "?") << ", "
             << log.last_cycle + 1 << " cycles, run id " << log.facts.run_id << '\n'
-            << hil::rig::format_check(log, *check);
+            << (log.facts.realtime ? hil::rig::format_real_time(log) : "") << hil::rig::format_check(log, *check);
   if (!plot_dir.empty()) std::cout << hil::rig::draw_plots(log, *check, plot_dir) << '\n';
   const std::vector<std::string> problems = hil::logger::log_problems(log.facts);
   std::cout << "refused traffic: " << hil::logger::describe_refused(log.facts) << '\n'
@@ -68,6 +68,9 @@ int main(int argc, char** argv) {
                       "SCHED_FIFO priority of the lock-step processes, the same for all (default 10, where the "
                       "system allows it); 0: normal scheduling")
       ->check(CLI::Range(0, 99));
+  run_cmd->add_flag("--realtime", run.realtime,
+                    "real-time mode (RIG-6): the CNC ticks on the wall clock at the machine's cycle time and never "
+                    "waits for answers (as the scenario key run.realtime; docs/REALTIME.md)");
   run_cmd->add_flag("--in-process", run.in_process,
                     "every node in this process, on direct calls instead of LCM: the same messages and log, "
                     "no network (for suites)");

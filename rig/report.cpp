@@ -15,6 +15,37 @@ std::string fmt(const char* format, double a, double b) {
 
 }  // namespace
 
+std::string format_real_time(const logger::RunLog& log) {
+  std::ostringstream out;
+  if (!log.real_time) return "real time: no statistics (HIL_RT_STATS) in the log\n";
+  const logger::RealTimeFigures& r = *log.real_time;
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "real time: %d us cycle, %lld ticks, overruns (missed ticks) %lld; tick jitter (wake-up - due) p50 "
+                "%.0f us, p99 %.0f us, max %.0f us%s\n",
+                r.cycle_us, static_cast<long long>(r.ticks), static_cast<long long>(r.overruns), r.jitter_p50_us,
+                r.jitter_p99_us, r.jitter_max_us, r.final ? "" : " (not the final statistics: the run was cut short)");
+  out << line;
+  out << "  scheduling:";
+  std::string nodes;
+  for (const auto& e : log.events)
+    if (e.event.message.rfind("real time: ", 0) == 0)
+      nodes += (nodes.empty() ? " " : "; ") + e.source + " " + e.event.message.substr(11);
+  out << (nodes.empty() ? " (no node said)" : nodes) << '\n';
+  std::snprintf(line, sizeof line, "  %-14s %10s %8s %8s %13s %10s %13s %9s\n", "answers", "in time", "late",
+                "missing", "out of order", "duplicate", "longest gap", "watchdog");
+  out << line;
+  for (const auto& p : r.participants) {
+    std::snprintf(line, sizeof line, "  %-14s %10lld %8lld %8lld %13lld %10lld %13lld %9lld\n", p.name.c_str(),
+                  static_cast<long long>(p.in_time), static_cast<long long>(p.late),
+                  static_cast<long long>(p.missing), static_cast<long long>(p.out_of_order),
+                  static_cast<long long>(p.duplicate), static_cast<long long>(p.longest_gap_cycles),
+                  static_cast<long long>(p.watchdog_cycles));
+    out << line;
+  }
+  return out.str();
+}
+
 int count_errors(const logger::RunLog& log) {
   int errors = 0;
   for (const auto& e : log.events) errors += e.event.severity == Severity::error ? 1 : 0;

@@ -11,6 +11,11 @@ namespace hil::rig {
 // Per-axis table, violations, events and the PLC's expectation results.
 std::string format_check(const logger::RunLog& log, const logger::CheckReport& report);
 
+// RIG-6 real-time mode: the CNC's tick jitter and overruns, each
+// participant's answers (the last HIL_RT_STATS) and how each node was
+// scheduled (its "real time: " event).
+std::string format_real_time(const logger::RunLog& log);
+
 // Number of error events in the log (from any node).
 int count_errors(const logger::RunLog& log);
 

@@ -120,7 +120,9 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
   }
   nodes.push_back(std::make_unique<Process>("plc_sim", node_args("plc_sim"), node_output("plc_sim"), lock_step));
   Process cnc("cnc", node_args("cnc"), node_output("cnc"), lock_step);
-  placed = cpu >= 0 ? ", the lock-step nodes on CPU " + std::to_string(cpu) : "";
+  placed = cpu >= 0 ? std::string(scenario.realtime ? ", the cycle nodes on CPU " : ", the lock-step nodes on CPU ") +
+                          std::to_string(cpu)
+                    : "";
   if (options.fifo_priority > 0)
     placed += cnc.fifo_refused().empty() ? ", SCHED_FIFO " + std::to_string(options.fifo_priority)
                                          : ", normal scheduling (SCHED_FIFO refused: " + cnc.fifo_refused() + ")";
@@ -180,6 +182,8 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
     std::string placed;
     exits = run_processes(scenario, dir, resolved, result.log_file, options, run_id, cpu, processes, placed);
     where = "LCM: " + rig_url(rig_port(options)) + placed;
+    if (scenario.realtime)
+      where += ", real time (" + std::to_string(scenario.machine.cycle_time_us) + " us ticks)";
   }
   const double run_wall_s = wall_s();
 
@@ -225,15 +229,18 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
       << "log: " << result.log_file << " (" << messages << " messages, " << log.last_cycle + 1 << " cycles = "
       << simulated_s << " s simulated in " << run_wall_s << " s wall, " << simulated_s / run_wall_s
       << " x real time)\n"
-      << "log complete: " << (problems.empty() ? "yes (every participant ended, every cycle on every lock-step "
-                                                 "channel, closed by the logger)"
-                                               : "NO (" + std::to_string(problems.size()) + " problems above)")
+      << "log complete: "
+      << (!problems.empty() ? "NO (" + std::to_string(problems.size()) + " problems above)"
+          : log.facts.realtime
+              ? "yes (every participant ended, every cycle of the cnc's output, its statistics, closed by the logger)"
+              : "yes (every participant ended, every cycle on every lock-step channel, closed by the logger)")
       << '\n'
       << "exit status: " << processes.str() << '\n'
       << "refused traffic: " << logger::describe_refused(log.facts) << '\n'
       << "expectations (plc_sim): " << log.facts.verdict_pass << " passed, " << log.facts.verdict_fail
       << " failed; the scenario has " << log.facts.expectations << ", plc_sim published "
       << (log.facts.verdicts_announced ? std::to_string(*log.facts.verdicts_announced) : "?") << '\n';
+  if (log.facts.realtime) out << format_real_time(log);
   if (check) out << format_check(log, *check) << violations_expected.str() << draw_plots(log, *check, (dir / "plots").string()) << '\n';
   else out << "offline check: the log has no scenario (HIL_SCENARIO)\n";
   result.report = out.str();
@@ -245,8 +252,18 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
 }  // namespace
 
 RunResult run_scenario(const RunOptions& options) {
-  const ScenarioSet set = load_scenario_set(options.scenario_file);
-  for (const ScenarioVariant& v : set.variants) {
+  ScenarioSet set = load_scenario_set(options.scenario_file);
+  for (ScenarioVariant& v : set.variants) {
+    // --realtime goes into the scenario every node reads (RIG-6).
+    if (options.realtime) {
+      v.scenario.realtime = true;
+      v.scenario.resolved["run"]["realtime"] = true;
+    }
+    // One thread cannot give each node its own wake-ups on the wall clock.
+    if (v.scenario.realtime && options.in_process)
+      throw ConfigError(options.scenario_file + ": --in-process runs in lock-step only; real-time mode (" +
+                        (options.realtime ? std::string("--realtime") : std::string("run.realtime")) +
+                        ") needs the processes (docs/REALTIME.md)");
     try {
       validate(v.scenario);
     } catch (const ConfigError& e) {

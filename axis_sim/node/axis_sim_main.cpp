@@ -1,11 +1,14 @@
 // The `axis_sim` process (RIG-1, RIG-3): one drive (axis_sim_node.hpp) on LCM.
 #include <spdlog/spdlog.h>
 
+#include <optional>
+
 #include "axis_sim_node.hpp"
 #include "node_options.hpp"
 #include "fault_bus.hpp"
 #include "udpm_bus.hpp"
 #include "participant.hpp"
+#include "real_time_process.hpp"
 #include "scenario.hpp"
 
 int main(int argc, char** argv) {
@@ -19,7 +22,11 @@ int main(int argc, char** argv) {
     const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
     const int index = scenario.machine.axis_index(axis_name);
     if (index < 0) throw std::runtime_error("axis '" + axis_name + "' is not on the machine");
-    const auto bus = hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "axis_sim " + axis_name);
+    // Real time (RIG-6): SCHED_FIFO (hil run sets it already) and locked memory where allowed.
+    std::optional<hil::lcm_support::RealTimeProcess> real_time;
+    if (scenario.realtime) real_time = hil::lcm_support::enter_real_time();
+    const auto bus =
+        hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "axis_sim " + axis_name);
     hil::lcm_support::Inbox inbox(*bus, options.run_id);
     hil::axis::AxisSimNode node(scenario.machine.axes[index], scenario.machine.cycle_time_s(), inbox);
     hil::lcm_support::Participant participant(inbox, node.name());
@@ -27,6 +34,7 @@ int main(int argc, char** argv) {
       spdlog::error("the CNC did not start a run within 30 s");
       return 2;
     }
+    if (real_time) hil::lcm_support::publish_real_time(inbox, *real_time, node.name());
     if (!participant.serve_until_end(std::chrono::seconds(10))) {
       spdlog::error("no message for 10 s after cycle {}: the CNC is gone", node.last_cycle());
       return 2;

@@ -5,7 +5,8 @@
 // channel, and the run ends when it has settled or timed out. The clock is
 // a policy: lock-step over LCM (the node waits for every participant's
 // answer), recorded input (`cnc --rerun` takes the answers from a log and
-// compares the output with it), and next the wall clock (real-time mode).
+// compares the output with it), and the wall clock (real-time mode:
+// cnc/node/real_time_answers.hpp, tick_clock.hpp).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -24,8 +25,9 @@ struct DriveError {
   std::string what;  // the monitors, e.g. "acceleration P-AXIS-00442"
 };
 
-// A participant that stopped answering (the lock-step watchdog, RIG-6): the
-// run goes on without it, and the channel stops as on a drive error.
+// A participant that stopped answering (the lock-step watchdog, or in real
+// time its watchdog in cycles, RIG-6): the run goes on without it, and the
+// channel stops as on a drive error.
 struct LostParticipant {
   std::string name;  // "axis_sim X", "plc_sim", "logger"
   std::string axis;  // the drive's axis, "" for any other participant

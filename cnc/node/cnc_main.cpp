@@ -11,7 +11,7 @@
 #include "scenario.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"cnc: the CNC node of the HIL rig, clock master in lock-step"};
+  CLI::App app{"cnc: the CNC node of the HIL rig, clock master in lock-step or in real time (run.realtime)"};
   hil::lcm_support::NodeOptions options;
   hil::lcm_support::add_node_options(app, options);
   std::vector<std::string> participants;
@@ -44,9 +44,13 @@ int main(int argc, char** argv) {
       participants.push_back("plc_sim");
       participants.push_back("logger");
     }
-    const auto bus = hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "cnc");
+    // Real time (RIG-6): SCHED_FIFO (hil run sets it already) and locked memory where allowed.
+    const hil::lcm_support::RealTimeProcess process =
+        scenario.realtime ? hil::lcm_support::enter_real_time() : hil::lcm_support::RealTimeProcess{};
+    const auto bus =
+        hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "cnc");
     return hil::cnc_node::run_cnc(
         scenario, text, *bus, options.run_id, participants,
-        {std::chrono::milliseconds(answer_timeout_ms), std::chrono::milliseconds(logger_timeout_ms)});
+        {std::chrono::milliseconds(answer_timeout_ms), std::chrono::milliseconds(logger_timeout_ms)}, process);
   });
 }

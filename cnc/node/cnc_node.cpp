@@ -16,7 +16,10 @@
 #include "inbox.hpp"
 #include "lock_step.hpp"
 #include "messages.hpp"
+#include "real_time_answers.hpp"
+#include "rt_stats_message.hpp"
 #include "run_identity.hpp"
+#include "tick_clock.hpp"
 
 namespace hil::cnc_node {
 namespace {
@@ -28,32 +31,43 @@ int64_t wall_us() {
       .count();
 }
 
-// RIG-6 lock-step over LCM: the CNC is the clock master; each cycle's
-// output is published, and the answers to it are every axis' and the PLC's
-// message for that cycle, waited for (the watchdog loses a silent one).
+// RIG-6 over LCM: the CNC is the clock master; each cycle's output is
+// published. In lock-step the answers to it are every axis' and the PLC's
+// message for that cycle, waited for (the watchdog loses a silent one); in
+// real time the CNC sleeps until the next tick is due and takes what has
+// arrived by then (real_time_answers.hpp).
 class CncNode : public cnc::CyclePolicy {
  public:
   CncNode(const Scenario& scenario, const std::string& scenario_text, lcm_support::Bus& bus, int64_t run_id,
-          std::vector<std::string> participants, CncTimeouts timeouts)
+          std::vector<std::string> participants, CncTimeouts timeouts, lcm_support::RealTimeProcess process)
       : scenario_(scenario), machine_(scenario.machine), scenario_text_(scenario_text), bus_(bus),
         inbox_(bus, run_id), participants_(std::move(participants)), timeouts_(timeouts),
         lock_step_(machine_, std::count(participants_.begin(), participants_.end(), "logger") > 0,
-                   timeouts.answer.count(), timeouts.logger.count(), &scenario_.faults) {
+                   timeouts.answer.count(), timeouts.logger.count(), &scenario_.faults),
+        realtime_(scenario.realtime), process_(std::move(process)),
+        real_time_(machine_, std::count(participants_.begin(), participants_.end(), "logger") > 0,
+                   timeouts.logger.count()),
+        ticker_(clock_, static_cast<int64_t>(machine_.cycle_time_us) * 1000) {
     for (size_t i = 0; i < machine_.axes.size(); ++i)
       inbox_.on<hil::axis_state_t>(channels::axis_state(machine_.axes[i].name),
                                    [this, i](const hil::axis_state_t& m, const lcm::ReceiveBuffer&) {
                                      return m.axis == machine_.axes[i].name &&
-                                            lock_step_.take_axis(i, m.cycle, m.errors);
+                                            (realtime_ ? real_time_.take_axis(i, m.cycle, m.errors)
+                                                       : lock_step_.take_axis(i, m.cycle, m.errors));
                                    });
     inbox_.on<hil::hli_control_t>(channels::hli_control, [this](const hil::hli_control_t& m, const lcm::ReceiveBuffer&) {
-      return lock_step_.take_plc(m.cycle, lcm_support::from_message(m));
+      return realtime_ ? real_time_.take_plc(m.cycle, lcm_support::from_message(m))
+                       : lock_step_.take_plc(m.cycle, lcm_support::from_message(m));
     });
     // Deep: a long first cycle (decoding a big program) queues heartbeats.
     inbox_.on<hil::participant_t>(
         channels::participant,
         [this](const hil::participant_t& m, const lcm::ReceiveBuffer& rbuf) {
           if (m.phase == hil::participant_t::PHASE_READY) ready_.insert(m.name);
-          if (m.name == "logger" && m.phase != hil::participant_t::PHASE_RUN_END) lock_step_.logger_alive(rbuf.recv_utime, m.cycle);
+          if (m.name == "logger" && m.phase != hil::participant_t::PHASE_RUN_END) {
+            lock_step_.logger_alive(rbuf.recv_utime, m.cycle);
+            real_time_.logger_alive(rbuf.recv_utime);
+          }
           return true;
         },
         100000);
@@ -63,23 +77,36 @@ class CncNode : public cnc::CyclePolicy {
     if (!wait_for_participants()) return 3;
     publish_manifest();
     cnc::Channel channel(scenario_.machine, scenario_.nc_program);
+    if (realtime_) {
+      lcm_support::publish_real_time(inbox_, process_, "cnc");
+      real_time_.logger_alive(wall_us());
+      ticker_.start();
+    }
     const cnc::CycleLoopResult result = cnc::run_cycles(channel, scenario_, *this);
     const int64_t k = result.last_cycle;
+    if (realtime_) publish_rt_stats(k, true);
     publish_run_end(k);
     spdlog::info("run ended after cycle {} ({:.3f} s simulated), channel {}", k, k * machine_.cycle_time_s(),
                  to_string(channel.hli().channel_state));
+    if (realtime_)
+      spdlog::info("real time: {} ticks, {} overrun(s), jitter p50 {} us, p99 {} us, max {} us",
+                   ticker_.jitter().count(), ticker_.overruns(), ticker_.jitter().quantile_us(0.5),
+                   ticker_.jitter().quantile_us(0.99), ticker_.jitter().max_us());
     if (!inbox_.ledger().empty()) spdlog::warn("refused: {}", inbox_.ledger().describe());
     // A participant lost to the scenario's own faults (RIG-8) is its design, not a failure.
     bool lost_unplanned = false;
-    for (const auto& [name, cycle] : lock_step_.lost()) lost_unplanned = lost_unplanned || !scenario_.faults.touches(name);
+    for (const auto& [name, cycle] : lost()) lost_unplanned = lost_unplanned || !scenario_.faults.touches(name);
     return !lost_unplanned && result.outcome != cnc::RunOutcome::answers_missing ? 0 : 3;
   }
 
   bool publish(int64_t k, const cnc::Channel& channel, const std::vector<Event>& events) override {
     for (const Event& e : events) log_event(e);
-    lock_step_.begin(k);  // before the output: an answer can only follow it
+    // Before the output: an answer can only follow it.
+    if (realtime_) real_time_.begin(k);
+    else lock_step_.begin(k);
     for (const auto& m : cnc_node::cycle_messages(channel, machine_, events, k, inbox_.run_id()))
       bus_.publish(m.channel, m.bytes.data(), static_cast<uint32_t>(m.bytes.size()));
+    if (realtime_) take_arrived();  // sends the cycle now, not at the next tick
     return true;
   }
 
@@ -90,7 +117,8 @@ class CncNode : public cnc::CyclePolicy {
     return true;
   }
 
-  std::optional<cnc::CycleAnswers> answers(int64_t) override {
+  std::optional<cnc::CycleAnswers> answers(int64_t k) override {
+    if (realtime_) return real_time_answers(k);
     wait_for_answers();
     wait_for_logger();
     cnc_node::LockStep::Taken taken = lock_step_.take();
@@ -99,6 +127,35 @@ class CncNode : public cnc::CyclePolicy {
   }
 
  private:
+  const std::vector<std::pair<std::string, int64_t>>& lost() const {
+    return realtime_ ? real_time_.lost() : lock_step_.lost();
+  }
+
+  // Real time: sleep until tick k+1 is due (an overrun runs at once), take
+  // what has arrived, end cycle k. Never waits for an answer.
+  cnc::CycleAnswers real_time_answers(int64_t k) {
+    ticker_.wait(k + 1);
+    take_arrived();
+    RealTimeAnswers::Taken taken = real_time_.end_cycle(wall_us());
+    if ((k + 1) % rt_stats_every_cycles == 0) publish_rt_stats(k, false);
+    return cnc::CycleAnswers{taken.control, cnc_node::drive_errors(machine_, taken.axis_errors),
+                             std::move(taken.lost)};
+  }
+
+  // Sends what is held and hands on every message that has arrived, without waiting.
+  void take_arrived() {
+    int handled = 0;
+    while ((handled = bus_.handle_timeout(0)) > 0) {
+    }
+    if (handled < 0) throw std::runtime_error("LCM receive failed");
+  }
+
+  void publish_rt_stats(int64_t k, bool final) {
+    const auto m = rt_stats_message(ticker_, real_time_, process_.what, k, machine_.cycle_time_us, inbox_.run_id(),
+                                    final);
+    bus_.publish(m.channel, m.bytes.data(), static_cast<uint32_t>(m.bytes.size()));
+  }
+
   bool wait_for_participants() {
     announce_ready();  // those up before the CNC announce again at once
     const auto give_up = clock_type::now() + std::chrono::seconds(20);
@@ -158,7 +215,7 @@ class CncNode : public cnc::CyclePolicy {
     end.verdicts = 0;
     end.rejected = lcm_support::to_message(inbox_.ledger());
     end.n_rejected = static_cast<int16_t>(end.rejected.size());
-    for (const auto& [name, cycle] : lock_step_.lost()) {
+    for (const auto& [name, cycle] : lost()) {
       end.lost.push_back(name);
       end.lost_cycle.push_back(cycle);
     }
@@ -198,14 +255,19 @@ class CncNode : public cnc::CyclePolicy {
   std::vector<std::string> participants_;
   CncTimeouts timeouts_;
   cnc_node::LockStep lock_step_;
+  bool realtime_;
+  lcm_support::RealTimeProcess process_;
+  RealTimeAnswers real_time_;
+  MonotonicClock clock_;
+  Ticker ticker_;
   std::set<std::string> ready_;
 };
 
 }  // namespace
 
 int run_cnc(const Scenario& scenario, const std::string& scenario_text, lcm_support::Bus& bus, int64_t run_id,
-            std::vector<std::string> participants, CncTimeouts timeouts) {
-  CncNode node(scenario, scenario_text, bus, run_id, std::move(participants), timeouts);
+            std::vector<std::string> participants, CncTimeouts timeouts, const lcm_support::RealTimeProcess& process) {
+  CncNode node(scenario, scenario_text, bus, run_id, std::move(participants), timeouts, process);
   return node.run();
 }
 

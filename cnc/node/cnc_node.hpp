@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bus.hpp"
+#include "real_time_process.hpp"
 #include "scenario.hpp"
 
 namespace hil::cnc_node {
@@ -21,8 +22,12 @@ struct CncTimeouts {
 
 // Waits (20 s at most) for every participant's READY, publishes the
 // manifest, runs the cycles and announces the CNC's RUN_END. Returns the
-// node's exit status: 0, or 3 if a participant was lost or missing.
+// node's exit status: 0, or 3 if a participant was lost or missing. In
+// real-time mode (scenario.realtime) the cycles tick on CLOCK_MONOTONIC at
+// the machine's cycle time and never wait for answers (real_time_answers.hpp,
+// tick_clock.hpp); `process` says how the process was scheduled.
 int run_cnc(const Scenario& scenario, const std::string& scenario_text, lcm_support::Bus& bus, int64_t run_id,
-            std::vector<std::string> participants, CncTimeouts timeouts);
+            std::vector<std::string> participants, CncTimeouts timeouts,
+            const lcm_support::RealTimeProcess& process = {});
 
 }  // namespace hil::cnc_node

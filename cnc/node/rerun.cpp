@@ -78,6 +78,11 @@ Recording read_recording(const std::string& path) {
     }
   }
   if (!r.scenario) throw std::runtime_error(path + ": no scenario (HIL_SCENARIO): nothing to rerun");
+  // RIG-6: in real time an answer went into the cycle it arrived in, which
+  // the log does not record (only the cycle it answered).
+  if (r.scenario->realtime)
+    throw std::runtime_error(path + ": a real-time run (run.realtime): its answers were taken when they arrived, "
+                                    "which the log does not hold; hil rerun reruns lock-step logs only");
   return r;
 }
 

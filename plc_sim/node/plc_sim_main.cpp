@@ -3,10 +3,13 @@
 // whenever the node did its job.
 #include <spdlog/spdlog.h>
 
+#include <optional>
+
 #include "node_options.hpp"
 #include "fault_bus.hpp"
 #include "udpm_bus.hpp"
 #include "participant.hpp"
+#include "real_time_process.hpp"
 #include "plc_sim_node.hpp"
 #include "scenario.hpp"
 
@@ -18,7 +21,11 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   return hil::lcm_support::guarded_main(PlcSimNode::source, [&] {
     const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
-    const auto bus = hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "plc_sim");
+    // Real time (RIG-6): SCHED_FIFO (hil run sets it already) and locked memory where allowed.
+    std::optional<hil::lcm_support::RealTimeProcess> real_time;
+    if (scenario.realtime) real_time = hil::lcm_support::enter_real_time();
+    const auto bus =
+        hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "plc_sim");
     hil::lcm_support::Inbox inbox(*bus, options.run_id);
     PlcSimNode node(scenario, inbox);
     hil::lcm_support::Participant participant(inbox, PlcSimNode::source);
@@ -26,6 +33,7 @@ int main(int argc, char** argv) {
       spdlog::error("the CNC did not start a run within 30 s");
       return 2;
     }
+    if (real_time) hil::lcm_support::publish_real_time(inbox, *real_time, PlcSimNode::source);
     if (!participant.serve_until_end(std::chrono::seconds(10))) {
       spdlog::error("no message for 10 s: the CNC is gone");
       return 2;

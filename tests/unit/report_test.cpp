@@ -33,3 +33,34 @@ TEST_CASE("LIFT-2 RIG-4 report: per axis the commanded |a| while lift_active bes
   for (int64_t k = 0; k < 5; ++k) quiet.add_setpoint(0, k, 0);
   CHECK_THAT(rig::format_check(log, quiet.finish()), !Catch::Contains("lifting"));
 }
+
+TEST_CASE("RIG-6 report: a real-time run's tick jitter, overruns, each participant's answers and scheduling",
+          "[report][RIG-6]") {
+  logger::RunLog log;
+  CHECK(rig::format_real_time(log) == "real time: no statistics (HIL_RT_STATS) in the log\n");
+  logger::RealTimeFigures r;
+  r.final = true;
+  r.cycle_us = 1000;
+  r.ticks = 600000;
+  r.overruns = 2;
+  r.jitter_p50_us = 9;
+  r.jitter_p99_us = 38;
+  r.jitter_max_us = 1203;
+  r.participants = {{"axis_sim X", 599990, 7, 3, 0, 1, 2, 20}, {"plc_sim", 600000, 0, 0, 0, 0, 0, 20}};
+  log.real_time = r;
+  logger::LoggedEvent e;
+  e.source = "axis_sim X";
+  e.event.severity = Severity::warning;
+  e.event.message = "real time: normal scheduling (SCHED_FIFO refused: Operation not permitted), memory locked";
+  log.events.push_back(e);
+  const std::string text = rig::format_real_time(log);
+  CHECK_THAT(text, Catch::Contains("real time: 1000 us cycle, 600000 ticks, overruns (missed ticks) 2; tick jitter "
+                                   "(wake-up - due) p50 9 us, p99 38 us, max 1203 us\n"));
+  CHECK_THAT(text, Catch::Contains("scheduling: axis_sim X normal scheduling (SCHED_FIFO refused: Operation not "
+                                   "permitted), memory locked\n"));
+  CHECK_THAT(text, Catch::Contains("  axis_sim X         599990        7        3             0          1             2"
+                                   "        20\n"));
+  r.final = false;  // a log cut short has only a periodic one
+  log.real_time = r;
+  CHECK_THAT(rig::format_real_time(log), Catch::Contains("(not the final statistics: the run was cut short)"));
+}

@@ -8,6 +8,7 @@
 #include <hil/hli_state_t.hpp>
 #include <hil/log_summary_t.hpp>
 #include <hil/participant_t.hpp>
+#include <hil/rt_stats_t.hpp>
 #include <hil/run_manifest_t.hpp>
 #include <hil/scenario_text_t.hpp>
 #include <lcm/lcm-cpp.hpp>
@@ -57,6 +58,9 @@ struct SyntheticRun {
   };
   std::function<double(int64_t cycle)> x;  // X's setpoints instead of v * t
   bool x_lifts = false;                    // HLI_STATE: lift_active for X in every cycle
+  bool realtime = false;                   // run.realtime (RIG-6)
+  bool rt_stats = true;                    // real time: the cnc's final HIL_RT_STATS
+  std::vector<std::string> lost;           // whom the cnc's RUN_END says it lost (at cycle 50)
 };
 
 void write_log(const std::string& path, const SyntheticRun& run) {
@@ -65,6 +69,7 @@ void write_log(const std::string& path, const SyntheticRun& run) {
   yaml << "name: synthetic\nmachine:\n";
   for (std::string line; std::getline(machine, line);) yaml << "  " << line << '\n';
   yaml << "nc_program: \"M30\\n\"\nexpect:\n  - when: program_end\n    channel_state: PROGRAM_END\n";
+  if (run.realtime) yaml << "run:\n  realtime: true\n";
   lcm::LogFile log(path, "w");
   REQUIRE(log.good());
   const std::vector<std::string> axes = {"X", "Y", "Z"};
@@ -125,6 +130,27 @@ void write_log(const std::string& path, const SyntheticRun& run) {
   e.source = "plc_sim";
   e.verdict = static_cast<int8_t>(run.verdict);
   if (run.keep(channels::event, last)) write(log, channels::event, e);
+  if (run.realtime && run.rt_stats) {
+    hil::rt_stats_t stats{};
+    stats.run_id = run.run_id;
+    stats.cycle = last;
+    stats.is_final = true;
+    stats.cycle_us = 1000;
+    stats.ticks = last + 1;
+    stats.jitter_p50_us = 7;
+    stats.jitter_p99_us = 42;
+    stats.jitter_max_us = 99;
+    stats.n_participants = 1;
+    stats.name = {"axis_sim X"};
+    stats.in_time = {89};
+    stats.late = {3};
+    stats.missing = {8};
+    stats.out_of_order = {0};
+    stats.duplicate = {0};
+    stats.longest_gap_cycles = {4};
+    stats.watchdog_cycles = {20};
+    write(log, channels::rt_stats, stats);
+  }
   for (const std::string name : {"cnc", "axis_sim X", "axis_sim Y", "axis_sim Z", "plc_sim"}) {
     hil::participant_t end{};
     end.run_id = run.run_id;
@@ -132,6 +158,11 @@ void write_log(const std::string& path, const SyntheticRun& run) {
     end.name = name;
     end.phase = hil::participant_t::PHASE_RUN_END;
     end.verdicts = name == "plc_sim" ? 1 : 0;
+    if (name == "cnc") {
+      end.lost = run.lost;
+      end.lost_cycle.assign(run.lost.size(), 50);
+      end.n_lost = static_cast<int16_t>(run.lost.size());
+    }
     if (run.keep(channels::participant + " " + name, last)) write(log, channels::participant, end);
   }
   if (!run.sealed) return;
@@ -329,4 +360,71 @@ TEST_CASE("RIG-6 run log: comparison ignores the run id, which differs from run 
   write_log(b, other);
   CHECK(logger::compare_run_logs(a, b).empty());
   for (const auto& p : {a, b}) std::remove(p.c_str());
+}
+
+TEST_CASE("RIG-9 RIG-6 run log: in real time answers may be missing; the CNC's output, its statistics, every "
+          "RUN_END and the seal may not", "[log][verdict][RIG-9][RIG-6]") {
+  auto thin_answers = [](const std::string& channel, int64_t cycle) {
+    return (channels::axis_of_state(channel).empty() && channel != channels::hli_control) || cycle % 25 >= 11;
+  };
+  SyntheticRun rt;  // 44 % of the answers missing, by nature of the mode
+  rt.realtime = true;
+  rt.keep = thin_answers;
+  CHECK(problems_of(rt).empty());
+  {
+    const std::string path = temp_path("rt.lcmlog");
+    write_log(path, rt);
+    const logger::RunLog log = logger::read_run_log(path);
+    std::remove(path.c_str());
+    CHECK(log.facts.realtime);
+    REQUIRE(log.real_time);
+    CHECK(log.real_time->final);
+    CHECK(log.real_time->jitter_p99_us == 42);
+    REQUIRE(log.real_time->participants.size() == 1);
+    CHECK(log.real_time->participants[0].missing == 8);
+    // A PASS is never printed on an incomplete log: here it is complete.
+    CHECK(logger::judge_run({{"cnc", 0}}, log.facts, "").passed);
+  }
+
+  SyntheticRun lock_step = rt;  // the same gaps in lock-step: incomplete
+  lock_step.realtime = false;
+  CHECK_THAT(joined(problems_of(lock_step)), Catch::Contains("AXIS_X_STATE: 44 of 100 cycles missing"));
+
+  SyntheticRun no_output = rt;  // a setpoint the CNC sent is not in the log
+  no_output.keep = [&](const std::string& channel, int64_t cycle) {
+    return thin_answers(channel, cycle) && !(channel == channels::axis_command("Y") && cycle == 17);
+  };
+  CHECK_THAT(joined(problems_of(no_output)), Catch::Contains("AXIS_Y_CMD: 1 of 100 cycles missing (the first: 17)"));
+
+  SyntheticRun no_stats = rt;
+  no_stats.rt_stats = false;
+  CHECK_THAT(joined(problems_of(no_stats)),
+             Catch::Contains("no final real-time statistics (HIL_RT_STATS) from the cnc"));
+
+  SyntheticRun no_end = rt;
+  no_end.keep = [&](const std::string& channel, int64_t cycle) {
+    return thin_answers(channel, cycle) && channel != channels::participant + " axis_sim Z";
+  };
+  CHECK_THAT(joined(problems_of(no_end)), Catch::Contains("no RUN_END from axis_sim Z"));
+
+  SyntheticRun unsealed = rt;
+  unsealed.sealed = false;
+  {
+    const std::string path = temp_path("rt_cut.lcmlog");
+    write_log(path, unsealed);
+    const logger::RunLog log = logger::read_run_log(path);
+    std::remove(path.c_str());
+    const logger::RunVerdict v = logger::judge_run({{"cnc", 0}}, log.facts, "");
+    CHECK_FALSE(v.passed);
+    CHECK_THAT(joined(v.reasons), Catch::Contains("the logger did not close the log"));
+  }
+
+  // The watchdog lost Y, which still ended: nothing is missing from the log
+  // (the loss is an error event of the run); in lock-step it is a gap.
+  SyntheticRun lost = rt;
+  lost.lost = {"axis_sim Y"};
+  CHECK(problems_of(lost).empty());
+  lost.realtime = false;
+  lost.keep = [](const std::string&, int64_t) { return true; };
+  CHECK_THAT(joined(problems_of(lost)), Catch::Contains("axis_sim Y went silent: the cnc lost it at cycle 50"));
 }

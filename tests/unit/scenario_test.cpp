@@ -408,3 +408,13 @@ expect:
   CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    path_velocity_max_at_most_mm_s: -1\n"),
                     Catch::Contains("expect[0].path_velocity_max_at_most_mm_s"));
 }
+
+TEST_CASE("RIG-6 scenario: run.realtime chooses real-time mode; lock-step without it; other keys stay errors",
+          "[scenario][RIG-6]") {
+  CHECK_FALSE(scenario("").realtime);
+  CHECK(scenario("run: {realtime: true}\n").realtime);
+  CHECK_FALSE(scenario("run: {realtime: false}\n").realtime);
+  CHECK_THROWS_WITH(scenario("run: {realtime: soon}\n"), Catch::Contains("run.realtime: must be true or false"));
+  CHECK_THROWS_WITH(scenario("run: {real_time: true}\n"),
+                    Catch::Contains("run.real_time: unknown key, did you mean realtime?"));
+}
