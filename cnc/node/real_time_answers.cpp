@@ -43,14 +43,16 @@ RealTimeAnswers::Taken RealTimeAnswers::end_cycle(int64_t now_us) {
     const std::string parameter = axes_[i].empty() ? "plc_watchdog_cycles" : "watchdog_cycles";
     t.lost.push_back({w.name(), axes_[i],
                       "watchdog: no answer for " + std::to_string(w.silent_cycles(cycle_)) + " cycles (" + parameter +
-                          " " + std::to_string(w.watchdog_cycles()) + ")"});
+                          " " + std::to_string(w.watchdog_cycles()) + ")",
+                      parameter});
     lost_so_far_.emplace_back(w.name(), cycle_);
   }
   if (watch_logger_ && !logger_lost_ && now_us - logger_heard_us_ > logger_timeout_ms_ * 1000) {
     logger_lost_ = true;
     t.lost.push_back({"logger", "",
                       "no heartbeat for " + std::to_string((now_us - logger_heard_us_) / 1000) + " ms at cycle " +
-                          std::to_string(cycle_) + ": the run is no longer recorded"});
+                          std::to_string(cycle_) + ": the run is no longer recorded",
+                      ""});
     lost_so_far_.emplace_back("logger", cycle_);
   }
   return t;
