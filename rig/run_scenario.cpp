@@ -3,6 +3,7 @@
 #include <sched.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -109,7 +110,12 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
 
   const auto wall_start = std::chrono::steady_clock::now();
   auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
-  const Placement lock_step{cpu, options.fifo_priority};
+  // Real time runs 10 above --fifo-priority: a lock-step run beside it (its
+  // nodes as busy as they can be at the same priority) must not hold off
+  // its ticks (RIG-6, docs/REALTIME.md).
+  const int priority = scenario.realtime && options.fifo_priority > 0 ? std::min(options.fifo_priority + 10, 99)
+                                                                      : options.fifo_priority;
+  const Placement lock_step{cpu, priority};
   std::vector<std::unique_ptr<Process>> nodes;
   nodes.push_back(std::make_unique<Process>("logger", logger_args, node_output("logger")));
   for (const AxisConfig& axis : scenario.machine.axes) {
@@ -123,8 +129,8 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
   placed = cpu >= 0 ? std::string(scenario.realtime ? ", the cycle nodes on CPU " : ", the lock-step nodes on CPU ") +
                           std::to_string(cpu)
                     : "";
-  if (options.fifo_priority > 0)
-    placed += cnc.fifo_refused().empty() ? ", SCHED_FIFO " + std::to_string(options.fifo_priority)
+  if (priority > 0)
+    placed += cnc.fifo_refused().empty() ? ", SCHED_FIFO " + std::to_string(priority)
                                          : ", normal scheduling (SCHED_FIFO refused: " + cnc.fifo_refused() + ")";
 
   // Lock-step runs faster than real time; this bound only catches a hang.
