@@ -4,7 +4,8 @@
 # CNC's watchdog stops the channel, the run passes as the scenario expects.
 # Two process runs and an in-process run of the message-loss scenario give
 # the same log message for message (seeded faults are deterministic), and
-# `hil rerun` reproduces a run with faults.
+# `hil rerun` reproduces a run with faults. In real time, axis X answering
+# 3 ms late from 1 s to 4 s is counted late and the motion goes on.
 . "$(dirname "$0")/lib.sh"
 faults="$HIL_SOURCE/scenarios/faults"
 
@@ -26,3 +27,9 @@ for other in b in; do
 done
 expect_status 0 "$hil" rerun "$WORK/loss_a/run.lcmlog"
 expect_output "identical"
+
+# Real time: thousands of late answers from axis X, none lost, the run passes.
+expect_status 0 "$hil" run "$faults/late_drive_realtime.yaml" --out "$WORK/late" --port 7803
+expect_output "PASSED"
+late=$(awk '$1 == "axis_sim" && $2 == "X" {print $4}' "$WORK/last.out")
+[ "${late:-0}" -ge 2000 ] || fail "axis X's late answers are not counted (got '${late}')"
