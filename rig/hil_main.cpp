@@ -65,8 +65,8 @@ int main(int argc, char** argv) {
                       "CPU of the lock-step processes (cnc, drives, PLC); default: the CPU hil starts on; -1: anywhere")
       ->check(CLI::Range(-1, 4095));
   run_cmd->add_option("--fifo-priority", run.fifo_priority,
-                      "SCHED_FIFO priority of the lock-step processes, the same for all (default 10, where the "
-                      "system allows it); 0: normal scheduling")
+                      "SCHED_FIFO priority of the lock-step processes, the same for all, where the system allows "
+                      "it (default 0: normal scheduling); real time runs 10 above it (default 20)")
       ->check(CLI::Range(0, 99));
   run_cmd->add_flag("--realtime", run.realtime,
                     "real-time mode (RIG-6): the CNC ticks on the wall clock at the machine's cycle time and never "

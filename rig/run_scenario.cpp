@@ -110,11 +110,13 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
 
   const auto wall_start = std::chrono::steady_clock::now();
   auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
-  // Real time runs 10 above --fifo-priority: a lock-step run beside it (its
-  // nodes as busy as they can be at the same priority) must not hold off
-  // its ticks (RIG-6, docs/REALTIME.md).
-  const int priority = scenario.realtime && options.fifo_priority > 0 ? std::min(options.fifo_priority + 10, 99)
-                                                                      : options.fifo_priority;
+  // Real time runs 10 above --fifo-priority (default 20): a lock-step run
+  // beside it under SCHED_FIFO (its nodes as busy as they can be) must not
+  // hold off its ticks (RIG-6, docs/REALTIME.md). Lock-step runs under
+  // normal scheduling unless asked: a SCHED_FIFO chain that is always busy
+  // starves every other process on its CPU (a tool that injects traffic,
+  // another test), and gained steadiness, not speed (docs/PERFORMANCE.md).
+  const int priority = scenario.realtime ? std::min(std::max(options.fifo_priority, 10) + 10, 99) : options.fifo_priority;
   const Placement lock_step{cpu, priority};
   std::vector<std::unique_ptr<Process>> nodes;
   nodes.push_back(std::make_unique<Process>("logger", logger_args, node_output("logger")));

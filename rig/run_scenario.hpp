@@ -13,7 +13,7 @@ struct RunOptions {
   bool quiet = false;        // summary line only
   bool in_process = false;   // every node in this process on the in-process bus (in_process_run.hpp)
   int cpu = -2;              // the CPU of the lock-step nodes: -2 the one hil starts on, -1 anywhere
-  int fifo_priority = 10;    // SCHED_FIFO priority of the lock-step nodes, one for all; 0: normal scheduling
+  int fifo_priority = 0;     // SCHED_FIFO priority of the lock-step nodes, one for all; 0: normal scheduling
   bool realtime = false;     // real-time mode (RIG-6) whatever the scenario's run.realtime says
 };
 

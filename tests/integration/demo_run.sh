@@ -6,7 +6,9 @@
 expect_status 0 "$hil" run "$HIL_SOURCE/scenarios/demo.yaml" --out "$WORK/run" --port 7667
 expect_output "PASSED"
 expect_output "limit violations: 0"
-# issue 17: the lock-step nodes under SCHED_FIFO (CI runs as root: allowed)
+# issue 17: lock-step under normal scheduling unless asked; asked, SCHED_FIFO (CI runs as root: allowed)
+grep -q "SCHED_FIFO" "$WORK/last.out" && fail "lock-step under SCHED_FIFO without --fifo-priority"
+expect_status 0 "$hil" run "$HIL_SOURCE/scenarios/demo.yaml" --out "$WORK/fifo" --port 7667 --fifo-priority 10
 expect_output "SCHED_FIFO 10"
 for f in run.lcmlog report.txt scenario.yaml; do
   [ -s "$WORK/run/$f" ] || fail "run folder lacks $f"
