@@ -184,7 +184,7 @@ std::vector<int64_t> AnswerSchedule::arrivals(int64_t cycle) {
   std::vector<int64_t> out;
   if (kill_ && cycle >= *kill_) return out;
   const MessageFate input = plan_.fate(input_, cycle);
-  if (input.dropped || input.corrupted) return out;  // no input, no answer: held ones wait
+  if (input.copies() == 0) return out;  // no input, no answer: held ones wait
   // The participant answers `cycle`: first what it held and may now send.
   std::stable_sort(held_.begin(), held_.end(), [](const Held& a, const Held& b) { return a.cycle < b.cycle; });
   for (auto it = held_.begin(); it != held_.end();) {
@@ -196,7 +196,7 @@ std::vector<int64_t> AnswerSchedule::arrivals(int64_t cycle) {
     it = held_.erase(it);
   }
   const MessageFate answer = plan_.fate(answer_, cycle);
-  const int copies = answer.dropped || answer.corrupted ? 0 : answer.duplicated ? 2 : 1;
+  const int copies = answer.copies();
   if (copies == 0) return out;
   if (answer.release_cycle > cycle) {
     held_.push_back({cycle, answer.release_cycle, copies});

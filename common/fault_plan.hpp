@@ -41,6 +41,9 @@ struct MessageFate {
   bool corrupted = false;
   bool duplicated = false;
   int64_t release_cycle = 0;  // sent when its sender publishes for this cycle or later
+
+  // How many undamaged copies reach the receivers.
+  int copies() const { return dropped || corrupted ? 0 : duplicated ? 2 : 1; }
 };
 
 class FaultPlan {

@@ -41,10 +41,7 @@ std::vector<int> expected_copies(const FaultPlan& plan, const std::string& chann
   std::vector<int> copies(static_cast<size_t>(last + 1), 0);
   const std::string sender = sender_of(channel);
   if (sender == "cnc") {
-    for (int64_t k = 0; k <= last; ++k) {
-      const MessageFate f = plan.fate(channel, k);
-      copies[static_cast<size_t>(k)] = f.dropped || f.corrupted ? 0 : f.duplicated ? 2 : 1;
-    }
+    for (int64_t k = 0; k <= last; ++k) copies[static_cast<size_t>(k)] = plan.fate(channel, k).copies();
     return copies;
   }
   AnswerSchedule schedule(plan, sender);

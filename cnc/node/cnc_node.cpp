@@ -192,27 +192,24 @@ class CncNode : public cnc::CyclePolicy {
     bus_.publish(channels::manifest, m);
   }
 
-  void announce_ready() {
-    hil::participant_t ready;
-    ready.run_id = inbox_.run_id();
-    ready.utime = 0;
-    ready.cycle = 0;
-    ready.name = "cnc";
-    ready.phase = hil::participant_t::PHASE_READY;
-    ready.verdicts = 0;
-    ready.n_rejected = 0;
-    ready.n_lost = 0;
-    bus_.publish(channels::participant, ready);
+  // The CNC's own HIL_PARTICIPANT announcement at cycle `k`.
+  hil::participant_t announcement(int8_t phase, int64_t k) const {
+    hil::participant_t m;
+    m.run_id = inbox_.run_id();
+    m.utime = k * machine_.cycle_time_us;
+    m.cycle = k;
+    m.name = "cnc";
+    m.phase = phase;
+    m.verdicts = 0;
+    m.n_rejected = 0;
+    m.n_lost = 0;
+    return m;
   }
 
+  void announce_ready() { bus_.publish(channels::participant, announcement(hil::participant_t::PHASE_READY, 0)); }
+
   void publish_run_end(int64_t k) {
-    hil::participant_t end;
-    end.run_id = inbox_.run_id();
-    end.utime = k * machine_.cycle_time_us;
-    end.cycle = k;
-    end.name = "cnc";
-    end.phase = hil::participant_t::PHASE_RUN_END;
-    end.verdicts = 0;
+    hil::participant_t end = announcement(hil::participant_t::PHASE_RUN_END, k);
     end.rejected = lcm_support::to_message(inbox_.ledger());
     end.n_rejected = static_cast<int16_t>(end.rejected.size());
     for (const auto& [name, cycle] : lost()) {
