@@ -17,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "command_line.hpp"
 #include "channel_fuzz.hpp"
 
 using namespace hil;
@@ -118,7 +119,7 @@ int main(int argc, char** argv) {
   int64_t chaos = -1;
   app.add_option("--chaos-cycles", chaos, "random PLC phase in cycles instead of the seed's (with --program: as minimized)");
   app.add_flag("--minimize", shrink, "shrink each failing run's program by deleting lines while it fails alike");
-  CLI11_PARSE(app, argc, argv);
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
   if (kind_name != "all") {
     const auto kind = parse_program_kind(kind_name);
     if (!kind) {

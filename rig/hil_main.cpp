@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <iostream>
 
+#include "command_line.hpp"
 #include "config_error.hpp"
 #include "plots.hpp"
 #include "report.hpp"
 #include "run_log.hpp"
+#include "run_command.hpp"
 #include "run_scenario.hpp"
 #include "tools.hpp"
 
@@ -53,12 +55,26 @@ int main(int argc, char** argv) {
 
   hil::rig::RunOptions run;
   run.bin_dir = own_directory();
-  auto* run_cmd = app.add_subcommand("run", "run a scenario through the whole rig and report");
+  hil::rig::SuiteCommand suite;
+  auto* run_cmd = app.add_subcommand(
+      "run", "run scenarios through the whole rig and report: one file, or files and folders as a suite (RIG-5, RIG-9)");
   // No CLI::ExistingFile: the loader refuses a missing file or a directory
   // as it refuses any bad input, naming it, with exit status 2.
-  run_cmd->add_option("scenario", run.scenario_file, "scenario YAML file")->required();
-  run_cmd->add_option("--out", run.run_dir, "run folder (default runs/<name>-<time>)");
-  run_cmd->add_option("--port", run.port, "udpm port of this rig (default derived from the pid)")
+  run_cmd->add_option("scenarios", suite.paths, "scenario YAML files and folders (every *.yaml below, recursively)")
+      ->required();
+  run_cmd->add_option("--out", run.run_dir,
+                      "run folder (default runs/<name>-<time>); of a suite: a folder per scenario below it "
+                      "(default runs/suite-<time>)");
+  run_cmd->add_option("--jobs,-j", suite.jobs, "scenarios run at once, each on its own port and CPU (default 1)")
+      ->check(CLI::Range(1, 64));
+  run_cmd->add_option("--shard", suite.shard,
+                      "K/N: run only the K-th of N deterministic slices of the suite (a CI matrix, an Indexed Job)");
+  run_cmd->add_option("--junit", suite.junit_file, "write JUnit XML results (one testcase per scenario)");
+  run_cmd->add_option("--json", suite.json_file, "write the results as JSON");
+  run_cmd->add_flag("--netns", suite.netns,
+                    "each run of a suite in a network namespace of its own, loopback multicast set up (root)");
+  run_cmd->add_option("--port", run.port,
+                      "udpm port of this rig (default derived from the pid); a suite's jobs use it and those above")
       ->check(CLI::Range(1024, 65535));
   run_cmd->add_option("--bin-dir", run.bin_dir, "folder of the node executables");
   run_cmd->add_option("--cpu", run.cpu,
@@ -100,21 +116,24 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   replay_cmd->add_option("--speed", speed, "1 = as recorded, 2 = twice as fast")->check(CLI::PositiveNumber);
 
+  auto* logplayer_cmd = app.add_subcommand(
+      "logplayer", "lcm-logplayer-gui on a log (seek, speed, channel filters), playing onto an LCM URL (RIG-7)");
+  logplayer_cmd->add_option("log", log_file, "LCM event log")->required()->check(CLI::ExistingFile);
+  logplayer_cmd->add_option("--url", replay_url, "where to play it (watch it there with hil spy URL)")
+      ->capture_default_str();
+
   auto* rerun_cmd = app.add_subcommand(
       "rerun", "feed the PLC inputs of a recorded run into this CNC build in lock-step; report the first "
                "difference or 'identical' (RIG-7)");
   rerun_cmd->add_option("log", log_file, "LCM event log of a rig run")->required()->check(CLI::ExistingFile);
 
-  CLI11_PARSE(app, argc, argv);
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
   if (*spy_cmd) return hil::rig::exec_spy(run.bin_dir, spy_source, speed);
   if (*replay_cmd) return hil::rig::exec_replay(log_file, replay_url, speed);
+  if (*logplayer_cmd) return hil::rig::exec_logplayer(log_file, replay_url);
   if (*rerun_cmd) return hil::rig::exec_rerun(run.bin_dir, log_file);
   try {
-    if (*run_cmd) {
-      const hil::rig::RunResult result = hil::rig::run_scenario(run);
-      std::cout << result.report;
-      return result.passed ? 0 : 1;
-    }
+    if (*run_cmd) return hil::rig::run_scenarios(suite, run);
     if (*check_cmd) return check_log(log_file, plot_dir);
     if (*compare_cmd) {
       const std::string difference = hil::logger::compare_run_logs(pair[0], pair[1]);

@@ -16,11 +16,13 @@
 #include "config_error.hpp"
 #include "drive_model.hpp"
 #include "in_process_run.hpp"
+#include "node_errors.hpp"
 #include "plots.hpp"
 #include "process.hpp"
 #include "report.hpp"
 #include "run_identity.hpp"
 #include "run_log.hpp"
+#include "run_summary.hpp"
 #include "scenario.hpp"
 #include "scenario_engine.hpp"
 #include "scenario_set.hpp"
@@ -30,13 +32,6 @@ namespace hil::rig {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string timestamp() {
-  const std::time_t now = std::time(nullptr);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", std::localtime(&now));
-  return buf;
-}
 
 // The scenario as run, for every node: scenario.yaml with the machine inline
 // and the NC program beside it in program.nc. A program of a million lines
@@ -54,6 +49,13 @@ std::string write_resolved(const Scenario& scenario, const fs::path& dir) {
 }
 
 }  // namespace
+
+std::string default_run_dir(const std::string& name) {
+  const std::time_t now = std::time(nullptr);
+  char time[32];
+  std::strftime(time, sizeof time, "%Y%m%d-%H%M%S", std::localtime(&now));
+  return "runs/" + name + "-" + time;
+}
 
 std::string rig_url(int port) {
   return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
@@ -96,7 +98,7 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
                                                std::string& placed) {
   const std::string url = rig_url(rig_port(options));
   const fs::path bin = options.bin_dir;
-  auto node_output = [&](const std::string& name) { return (dir / (name + ".out")).string(); };
+  auto node_output = [&](const std::string& name) { return node_output_file(dir.string(), name); };
   auto node_args = [&](const std::string& exe) {
     return std::vector<std::string>{(bin / exe).string(), "--scenario", resolved, "--url", url, "--run-id", run_id};
   };
@@ -124,7 +126,7 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
     std::vector<std::string> args = node_args("axis_sim");
     args.insert(args.end(), {"--axis", axis.name});
     nodes.push_back(
-        std::make_unique<Process>("axis_sim " + axis.name, args, node_output("axis_sim_" + axis.name), lock_step));
+        std::make_unique<Process>("axis_sim " + axis.name, args, node_output("axis_sim " + axis.name), lock_step));
   }
   nodes.push_back(std::make_unique<Process>("plc_sim", node_args("plc_sim"), node_output("plc_sim"), lock_step));
   Process cnc("cnc", node_args("cnc"), node_output("cnc"), lock_step);
@@ -162,6 +164,15 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
   return exits;
 }
 
+// What the summary table and JUnit show of a failed run: the first failed
+// expectation, else the first reason.
+std::string first_failure(const logger::RunLog& log, const logger::RunVerdict& verdict) {
+  if (verdict.passed) return "";
+  for (const logger::LoggedEvent& e : log.events)
+    if (e.event.verdict == Verdict::fail) return e.source + ": " + e.event.message;
+  return verdict.reasons.empty() ? "" : verdict.reasons.front();
+}
+
 // One run of the rig in `run_dir`; `figures` (if given) gets the run's
 // figures for the comparison of variants.
 RunResult run_one(const Scenario& scenario, const std::string& run_dir, const RunOptions& options,
@@ -194,9 +205,27 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
       where += ", real time (" + std::to_string(scenario.machine.cycle_time_us) + " us ticks)";
   }
   const double run_wall_s = wall_s();
+  result.wall_s = run_wall_s;
+  const std::string node_errors = describe_node_errors(exits, dir.string(), options.in_process);
 
   std::optional<logger::CheckReport> check;
-  const logger::RunLog log = logger::read_run_log(result.log_file, &check);
+  logger::RunLog log;
+  try {
+    log = logger::read_run_log(result.log_file, &check);
+  } catch (const std::exception& e) {
+    // Nothing recorded (a node that could not start): say why, in report.txt as well.
+    const logger::RunVerdict verdict = logger::judge_run(exits, log.facts, std::string("no log: ") + e.what());
+    std::ostringstream out;
+    out << "scenario " << scenario.name << ": FAILED\n";
+    for (const std::string& reason : verdict.reasons) out << "  because " << reason << '\n';
+    out << node_errors << "run folder: " << result.run_dir << '\n' << where << ", run id " << run_id << '\n'
+        << "exit status: " << processes.str() << '\n';
+    result.report = out.str();
+    result.first_failure = verdict.reasons.empty() ? e.what() : verdict.reasons.front();
+    std::ofstream(dir / "report.txt") << result.report;
+    if (figures) *figures = figures_of(variant, false, log, nullptr);
+    return result;
+  }
   // Violations the scenario provokes on purpose must be found; no other may be.
   std::string check_failure = check ? "" : "no scenario in the log, so no limits to check against";
   std::ostringstream violations_expected;
@@ -218,9 +247,11 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
   }
   const logger::RunVerdict verdict = logger::judge_run(exits, log.facts, check_failure);
   result.passed = verdict.passed;
+  result.simulated_s = (log.last_cycle + 1) * scenario.machine.cycle_time_s();
+  result.first_failure = first_failure(log, verdict);
 
   std::ostringstream out;
-  const double simulated_s = (log.last_cycle + 1) * scenario.machine.cycle_time_s();
+  const double simulated_s = result.simulated_s;
   int64_t messages = 0;
   for (const auto& entry : log.messages_per_channel) messages += entry.second;
   out << "scenario " << scenario.name;
@@ -231,6 +262,7 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
   }
   out << ": " << (result.passed ? "PASSED" : "FAILED") << '\n';
   for (const std::string& reason : verdict.reasons) out << "  because " << reason << '\n';
+  out << node_errors;
   const std::vector<std::string> problems = logger::log_problems(log.facts);
   out << "run folder: " << result.run_dir << '\n'
       << where << ", run id " << run_id << '\n'
@@ -257,6 +289,56 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
   return result;
 }
 
+// Each variant in a folder of its own, one after the other on the same port.
+RunResult run_variants(const ScenarioSet& set, const std::string& run_dir, const RunOptions& options) {
+  RunResult result;
+  result.run_dir = run_dir;
+  result.passed = true;
+  std::vector<VariantFigures> figures;
+  std::ostringstream runs;
+  for (const ScenarioVariant& v : set.variants) {
+    figures.emplace_back();
+    const RunResult one = run_one(v.scenario, (fs::path(run_dir) / v.name).string(), options, v.name, &figures.back());
+    result.passed = result.passed && one.passed;
+    result.simulated_s += one.simulated_s;
+    result.wall_s += one.wall_s;
+    if (result.first_failure.empty() && !one.first_failure.empty())
+      result.first_failure = "variant " + v.name + ": " + one.first_failure;
+    if (result.log_file.empty()) result.log_file = one.log_file;
+    runs << "=== variant " << v.name << " ===\n" << one.report << '\n';
+  }
+  bool comparisons_hold = true;
+  const std::string checks = check_comparisons(figures, set.comparisons, comparisons_hold);
+  result.passed = result.passed && comparisons_hold;
+  if (result.first_failure.empty() && !comparisons_hold) result.first_failure = "a comparison of the variants fails";
+  std::ostringstream out;
+  out << "scenario " << set.name << " (" << set.variants.size() << " variants): " << (result.passed ? "PASSED" : "FAILED")
+      << '\n';
+  for (const VariantFigures& f : figures)
+    if (!f.passed) out << "  because variant " << f.name << " failed\n";
+  if (!comparisons_hold) out << "  because a comparison of the variants fails\n";
+  out << "run folder: " << run_dir << " (a folder per variant)\n\n" << runs.str() << "=== the variants side by side ===\n"
+      << format_variants(figures) << checks
+      << draw_comparison_plots(set.name, figures, set.comparisons, run_dir) << '\n'
+      << "scenario " << set.name << ": " << (result.passed ? "PASSED" : "FAILED") << '\n';
+  result.report = out.str();
+  std::ofstream(fs::path(run_dir) / "report.txt") << result.report;
+  return result;
+}
+
+RunSummary summary_of(const std::string& scenario_file, const ScenarioSet& set, const RunResult& result) {
+  RunSummary s;
+  s.scenario_file = scenario_file;
+  s.name = set.name;
+  s.requirements = set.variants.front().scenario.requirements;
+  s.outcome = result.passed ? Outcome::passed : Outcome::failed;
+  s.simulated_s = result.simulated_s;
+  s.wall_s = result.wall_s;
+  s.first_failure = result.first_failure;
+  s.run_dir = result.run_dir;
+  return s;
+}
+
 }  // namespace
 
 RunResult run_scenario(const RunOptions& options) {
@@ -278,37 +360,10 @@ RunResult run_scenario(const RunOptions& options) {
       throw ConfigError(options.scenario_file + ": " + e.what() + (v.name.empty() ? "" : " (variant " + v.name + ")"));
     }
   }
-  const std::string run_dir = options.run_dir.empty() ? "runs/" + set.name + "-" + timestamp() : options.run_dir;
-  if (!set.has_variants()) return run_one(set.variants.front().scenario, run_dir, options, "", nullptr);
-
-  // Each variant in a folder of its own, one after the other on the same port.
-  RunResult result;
-  result.run_dir = run_dir;
-  result.passed = true;
-  std::vector<VariantFigures> figures;
-  std::ostringstream runs;
-  for (const ScenarioVariant& v : set.variants) {
-    figures.emplace_back();
-    const RunResult one = run_one(v.scenario, (fs::path(run_dir) / v.name).string(), options, v.name, &figures.back());
-    result.passed = result.passed && one.passed;
-    if (result.log_file.empty()) result.log_file = one.log_file;
-    runs << "=== variant " << v.name << " ===\n" << one.report << '\n';
-  }
-  bool comparisons_hold = true;
-  const std::string checks = check_comparisons(figures, set.comparisons, comparisons_hold);
-  result.passed = result.passed && comparisons_hold;
-  std::ostringstream out;
-  out << "scenario " << set.name << " (" << set.variants.size() << " variants): " << (result.passed ? "PASSED" : "FAILED")
-      << '\n';
-  for (const VariantFigures& f : figures)
-    if (!f.passed) out << "  because variant " << f.name << " failed\n";
-  if (!comparisons_hold) out << "  because a comparison of the variants fails\n";
-  out << "run folder: " << run_dir << " (a folder per variant)\n\n" << runs.str() << "=== the variants side by side ===\n"
-      << format_variants(figures) << checks
-      << draw_comparison_plots(set.name, figures, set.comparisons, run_dir) << '\n'
-      << "scenario " << set.name << ": " << (result.passed ? "PASSED" : "FAILED") << '\n';
-  result.report = out.str();
-  std::ofstream(fs::path(run_dir) / "report.txt") << result.report;
+  const std::string run_dir = options.run_dir.empty() ? default_run_dir(set.name) : options.run_dir;
+  RunResult result = set.has_variants() ? run_variants(set, run_dir, options)
+                                        : run_one(set.variants.front().scenario, run_dir, options, "", nullptr);
+  write_run_summary(summary_of(options.scenario_file, set, result), (fs::path(run_dir) / "summary.yaml").string());
   return result;
 }
 

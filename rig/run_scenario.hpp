@@ -22,10 +22,17 @@ struct RunResult {
   std::string run_dir;
   std::string log_file;
   std::string report;
+  double simulated_s = 0;     // of every variant
+  double wall_s = 0;          // the runs', without loading and checking
+  std::string first_failure;  // the first failed expectation, else the first reason ("" if passed)
 };
 
-// Throws ConfigError for a scenario that cannot run.
+// Throws ConfigError for a scenario that cannot run. Leaves report.txt and
+// summary.yaml (run_summary.hpp) in the run folder.
 RunResult run_scenario(const RunOptions& options);
+
+// "runs/<name>-<YYYYmmdd-HHMMSS>": a run's folder unless --out says.
+std::string default_run_dir(const std::string& name);
 
 // The rig's LCM URL for a port: multicast that never leaves the machine
 // (ttl=0) and a receive buffer deep enough for lock-step bursts.

@@ -51,6 +51,13 @@ int exec_spy(const std::string& bin_dir, const std::string& source, double speed
   return exec({"lcm-spy", "--lcm-url=" + url});
 }
 
+int exec_logplayer(const std::string& log, const std::string& url) {
+  ::setenv("JDK_JAVA_OPTIONS", "-XX:+IgnoreUnrecognizedVMOptions", 1);
+  std::cout << "lcm-logplayer-gui: " << log << " onto " << url << " (watch it with hil spy " << url << ")\n"
+            << std::flush;
+  return exec({"lcm-logplayer-gui", "--lcm-url=" + url, log});
+}
+
 int exec_replay(const std::string& log, const std::string& url, double speed) {
   std::cout << "playing " << log << " onto " << url << " at speed " << number(speed) << '\n' << std::flush;
   return exec({"lcm-logplayer", "-s", number(speed), "-l", url, log});

@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "command_line.hpp"
 #include "axis_sim_node.hpp"
 #include "node_options.hpp"
 #include "fault_bus.hpp"
@@ -17,7 +18,7 @@ int main(int argc, char** argv) {
   hil::lcm_support::add_node_options(app, options);
   std::string axis_name;
   app.add_option("--axis", axis_name, "axis name as in the machine configuration")->required();
-  CLI11_PARSE(app, argc, argv);
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
   return hil::lcm_support::guarded_main("axis_sim " + axis_name, [&] {
     const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
     const int index = scenario.machine.axis_index(axis_name);

@@ -2,6 +2,7 @@
 // or `--rerun LOG`: a recorded run's PLC inputs fed into this build.
 #include <iostream>
 
+#include "command_line.hpp"
 #include "cnc_node.hpp"
 #include "node_options.hpp"
 #include "fault_bus.hpp"
@@ -29,13 +30,18 @@ int main(int argc, char** argv) {
   // A rerun needs neither a scenario file nor a rig: the log has both.
   for (const char* option : {"--scenario", "--url", "--run-id"})
     app.get_option(option)->required(false)->excludes("--rerun");
-  CLI11_PARSE(app, argc, argv);
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
   if (rerun_log.empty() && (options.scenario_file.empty() || options.url.empty() || options.run_id <= 0)) {
     std::cerr << "cnc: --scenario, --url and --run-id are required (or --rerun LOG)\n";
     return 2;
   }
-  if (!rerun_log.empty())
-    return hil::lcm_support::guarded_main("cnc", [&] { return hil::cnc_node::rerun(rerun_log, std::cout); });
+  // 1 is "differs": a log that cannot be rerun is bad input (2), said on stderr.
+  if (!rerun_log.empty()) try {
+      return hil::cnc_node::rerun(rerun_log, std::cout);
+    } catch (const std::exception& e) {
+      std::cerr << "cnc --rerun: " << e.what() << '\n';
+      return 2;
+    }
   return hil::lcm_support::guarded_main("cnc", [&] {
     const std::string text = hil::read_text(options.scenario_file);
     const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);

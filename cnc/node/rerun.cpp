@@ -45,7 +45,9 @@ Recording read_recording(const std::string& path) {
   lcm::LogFile file(path, "r");
   if (!file.good()) throw std::runtime_error("cannot open LCM log " + path);
   Recording r;
+  bool any_event = false;
   while (const lcm::LogEvent* e = file.readNextEvent()) {
+    any_event = true;
     const std::string& ch = e->channel;
     const uint32_t n = static_cast<uint32_t>(e->datalen);
     if (ch == channels::manifest) {
@@ -77,6 +79,7 @@ Recording read_recording(const std::string& path) {
       if (decode(e->data, n, m) && m.source == "cnc") r.outputs[ch].emplace_back(static_cast<const char*>(e->data), n);
     }
   }
+  if (!any_event) throw std::runtime_error(path + " is not an LCM event log (no event found)");
   if (!r.scenario) throw std::runtime_error(path + ": no scenario (HIL_SCENARIO): nothing to rerun");
   // RIG-6: in real time an answer went into the cycle it arrived in, which
   // the log does not record (only the cycle it answered).

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "command_line.hpp"
 #include "position_profile.hpp"
 #include "profile_check.hpp"
 
@@ -48,7 +49,7 @@ int main(int argc, char** argv) {
   std::string in_path, out_path;
   app.add_option("in", in_path, "CSV with columns p0,v0,a0,pf,vf,af,vmax,amax,jmax")->required();
   app.add_option("out", out_path, "CSV written with duration,ok appended")->required();
-  CLI11_PARSE(app, argc, argv);
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
 
   std::ifstream in(in_path);
   if (!in) {

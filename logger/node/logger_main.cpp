@@ -5,6 +5,7 @@
 
 #include <chrono>
 
+#include "command_line.hpp"
 #include "logger_node.hpp"
 #include "node_options.hpp"
 #include "udpm_bus.hpp"
@@ -27,7 +28,7 @@ int main(int argc, char** argv) {
   app.add_option("--scenario", scenario_file, "the resolved scenario file: written into the log after the manifest")
       ->check(CLI::ExistingFile);
   app.add_option("--linger-s", linger_s, "after the CNC's RUN_END, wait at most this long for the others");
-  CLI11_PARSE(app, argc, argv);
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
   return hil::lcm_support::guarded_main("logger", [&] {
     const auto bus = hil::lcm_support::node_bus(url, {std::chrono::milliseconds(1)});
     std::optional<std::pair<std::string, std::string>> scenario;

@@ -5,6 +5,7 @@
 
 #include <optional>
 
+#include "command_line.hpp"
 #include "node_options.hpp"
 #include "fault_bus.hpp"
 #include "udpm_bus.hpp"
@@ -18,7 +19,7 @@ int main(int argc, char** argv) {
   CLI::App app{"plc_sim: simulated PLC of the HIL rig, runs the scenario timeline"};
   hil::lcm_support::NodeOptions options;
   hil::lcm_support::add_node_options(app, options);
-  CLI11_PARSE(app, argc, argv);
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
   return hil::lcm_support::guarded_main(PlcSimNode::source, [&] {
     const hil::Scenario scenario = hil::load_scenario_file(options.scenario_file);
     // Real time (RIG-6): SCHED_FIFO (hil run sets it already) and locked memory where allowed.

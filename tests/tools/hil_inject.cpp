@@ -25,6 +25,7 @@
 #include <regex>
 #include <thread>
 
+#include "command_line.hpp"
 #include "channels.hpp"
 
 namespace {
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
   double pause_s = 0;
   app.add_option("--pause-s", pause_s, "instead of a kill: SIGSTOP, and SIGCONT this many seconds later")
       ->check(CLI::Range(0.0, 60.0));
-  CLI11_PARSE(app, argc, argv);
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
 
   lcm::LCM lcm(url);
   if (!lcm.good()) return 2;

@@ -1,0 +1,22 @@
+#pragma once
+// What a node that failed said (issue 19): its last error line from its
+// output file in the run folder, so that `hil run` shows why a run could not
+// even start (LCM without a multicast route, a port in use) instead of only
+// "cannot open LCM log".
+#include <string>
+#include <vector>
+
+#include "verdict.hpp"
+
+namespace hil::rig {
+
+// The output file of a node of a run folder: cnc.out, axis_sim_X.out, ...
+std::string node_output_file(const std::string& run_dir, const std::string& node_name);
+
+// One line per node that did not exit 0: its name, status and last error
+// line (from `output_file(name)`), and once, if any output shows LCM's "No
+// route", how to give the machine a multicast route. "" if every node ended well.
+std::string describe_node_errors(const std::vector<logger::ProcessExit>& exits,
+                                 const std::string& run_dir, bool in_process);
+
+}  // namespace hil::rig

@@ -1,0 +1,79 @@
+#include "run_command.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "config_error.hpp"
+#include "scenario_files.hpp"
+#include "suite_progress.hpp"
+#include "suite_results.hpp"
+#include "suite_run.hpp"
+
+namespace hil::rig {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string suite_name(const SuiteCommand& command) {
+  std::string name = "hil run";
+  for (const std::string& p : command.paths) name += " " + p;
+  return command.shard.empty() ? name : name + " --shard " + command.shard;
+}
+
+void write_results(const SuiteCommand& command, const SuiteResult& suite) {
+  if (!command.junit_file.empty()) write_junit(suite, suite_name(command), command.junit_file);
+  if (!command.json_file.empty()) write_json(suite, suite_name(command), command.json_file);
+}
+
+// One file: in this process, its whole report on stdout.
+int run_single(const SuiteCommand& command, RunOptions run) {
+  run.scenario_file = command.paths.front();
+  const RunResult result = run_scenario(run);
+  std::cout << result.report;
+  if (!command.junit_file.empty() || !command.json_file.empty()) {
+    SuiteResult suite;
+    suite.out_dir = result.run_dir;
+    suite.wall_s = result.wall_s;
+    suite.runs.push_back(read_run_summary((fs::path(result.run_dir) / "summary.yaml").string()));
+    write_results(command, suite);
+  }
+  return result.passed ? 0 : 1;
+}
+
+}  // namespace
+
+int run_scenarios(const SuiteCommand& command, const RunOptions& run) {
+  std::error_code ec;
+  const bool single = command.paths.size() == 1 && command.shard.empty() && !fs::is_directory(command.paths[0], ec);
+  if (single) return run_single(command, run);
+
+  SuiteOptions options;
+  options.files = collect_scenario_files(command.paths);
+  if (!command.shard.empty()) options.files = shard_of(options.files, parse_shard(command.shard));
+  options.jobs = command.jobs;
+  options.netns = command.netns;
+  options.run = run;
+  options.out_dir = run.run_dir.empty() ? default_run_dir("suite") : run.run_dir;
+  fs::create_directories(options.out_dir);
+
+  std::cout << suite_name(command) << ": " << options.files.size() << " scenario(s), " << command.jobs
+            << " at a time, " << (run.in_process ? "in-process" : command.netns ? "processes, a network namespace each"
+                                                                                 : "processes, a udpm port each")
+            << ", run folders below " << options.out_dir << '\n'
+            << std::flush;
+  SuiteProgress progress(std::cout, options.files.size(), ::isatty(STDOUT_FILENO) == 1);
+  const SuiteResult suite = run_suite(options, {[&](const std::string& file) { progress.started(file); },
+                                                [&](const RunSummary& r) { progress.finished(r); },
+                                                [&] { progress.waiting(); }});
+  progress.close();
+  const std::string table = format_summary_table(suite);
+  std::cout << '\n' << table;
+  std::ofstream(fs::path(options.out_dir) / "summary.txt") << table;
+  write_results(command, suite);
+  return suite.passed() ? 0 : 1;
+}
+
+}  // namespace hil::rig
