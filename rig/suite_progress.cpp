@@ -1,5 +1,8 @@
 #include "suite_progress.hpp"
 
+#include <sys/ioctl.h>
+#include <unistd.h>
+
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
@@ -52,8 +55,13 @@ void SuiteProgress::draw() {
   drawn_second_ = static_cast<long>(elapsed);
   std::string now;
   for (const std::string& file : running_) now += (now.empty() ? "" : ", ") + file;
-  out_ << "\r\033[K" << done_ << '/' << total_ << " done, " << running_.size() << " running, " << failed_
-       << " failed, " << format_elapsed(elapsed) << (now.empty() ? "" : "  " + now.substr(0, 80)) << std::flush;
+  std::ostringstream line;
+  line << done_ << '/' << total_ << " done, " << running_.size() << " running, " << failed_ << " failed, "
+       << format_elapsed(elapsed) << (now.empty() ? "" : "  " + now);
+  // A line longer than the terminal wraps, and \r no longer returns to its start.
+  winsize size{};
+  const size_t width = ::ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0 ? size.ws_col : 80;
+  out_ << "\r\033[K" << line.str().substr(0, width - 1) << std::flush;
 }
 
 void SuiteProgress::close() {

@@ -44,15 +44,20 @@ PY
 
 # Shards: disjoint, together the whole suite, the same slices every time.
 expect_status 0 "$bin/hil" run suite/a_short_move.yaml suite/sub/c_longer_move.yaml "$HIL_SOURCE/scenarios/monitoring" \
-  --shard 1/2 --in-process --out shard1 --json shard1.json
+  --shard 1/2 --in-process --out shard1 --json shard1.json --junit shard1.xml
 expect_status 0 "$bin/hil" run suite/a_short_move.yaml suite/sub/c_longer_move.yaml "$HIL_SOURCE/scenarios/monitoring" \
-  --shard 2/2 --in-process --out shard2 --json shard2.json
+  --shard 2/2 --in-process --out shard2 --json shard2.json --junit shard2.xml
+expect_status 0 python3 "$HIL_SOURCE/scripts/merge_junit.py" merged.xml shard1.xml shard2.xml
+expect_output "merged.xml: 6 tests, 0 failures, 0 errors, 0 skipped from 2 file(s)"
 python3 - <<'PY'
 import json
 a = [r["scenario_file"] for r in json.load(open("shard1.json"))["runs"]]
 b = [r["scenario_file"] for r in json.load(open("shard2.json"))["runs"]]
 assert len(a) == 3 and len(b) == 3 and not set(a) & set(b), (a, b)
 assert a[0] == "suite/a_short_move.yaml" and b[0] == "suite/sub/c_longer_move.yaml", (a, b)
+import xml.etree.ElementTree as ET
+merged = ET.parse("merged.xml").getroot()
+assert len(merged.findall("testsuite/testcase")) == 6 and merged.get("tests") == "6"
 PY
 
 # Each run in a network namespace of its own (root).
