@@ -16,6 +16,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "command_line.hpp"
 #include "channel.hpp"
 #include "limit_check.hpp"
 #include "machine_config.hpp"
@@ -117,17 +118,18 @@ void print(const char* name, const Result& r, double path_dev) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App app{"contour_bench: polynomial contouring (KRN-6) on a chord circle and the demo contour"};
   int chords = 10000, decimals = 9;
   double path_dev = 0.01, radius = 15.9, chord = 0.1;
-  const char* csv_path = nullptr;
-  const char* only = nullptr;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--chords")) chords = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--path-dev")) path_dev = std::atof(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--csv")) csv_path = argv[i + 1];
-    else if (!std::strcmp(argv[i], "--only")) only = argv[i + 1];
-    else if (!std::strcmp(argv[i], "--decimals")) decimals = std::atoi(argv[i + 1]);
-  }
+  std::string csv_file, only_name;
+  app.add_option("--chords", chords, "chords of the circle")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--path-dev", path_dev, "permitted path deviation, mm")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--csv", csv_file, "write the commanded path as CSV");
+  app.add_option("--only", only_name, "circle or contour")->check(CLI::IsMember({"circle", "contour"}));
+  app.add_option("--decimals", decimals, "decimals of the chord end points")->check(CLI::Range(0, 15))->capture_default_str();
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
+  const char* csv_path = csv_file.empty() ? nullptr : csv_file.c_str();
+  const char* only = only_name.empty() ? nullptr : only_name.c_str();
   const MachineConfig machine =
       parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyz_machine.yaml"));
   FILE* csv = csv_path ? std::fopen(csv_path, "w") : nullptr;

@@ -20,6 +20,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "command_line.hpp"
 #include "line_source.hpp"
 #include "program_stream.hpp"
 #include "machine_config.hpp"
@@ -188,20 +189,18 @@ void decode_and_plan_forked(int64_t blocks, const std::string& dir) {
 
 }  // namespace
 
-// planner_bench                      profiles, then decode + plan of 10 k, 1 M and 10 M blocks
-// planner_bench --profiles-only      profiles only
-// planner_bench --blocks N [--dir D]  decode + plan of N blocks only (temporary file in D, default /tmp)
 int main(int argc, char** argv) {
+  CLI::App app{"planner_bench: jerk profiles per family, then decode + plan of 10 k, 1 M and 10 M blocks"};
+  bool profiles_only = false;
   int64_t only = 0;
   std::string dir = "/tmp";
-  if (argc > 1 && std::string(argv[1]) == "--profiles-only") {
+  app.add_flag("--profiles-only", profiles_only, "the profiles only");
+  app.add_option("--blocks", only, "decode + plan of this many blocks only")->check(CLI::PositiveNumber);
+  app.add_option("--dir", dir, "folder of the temporary NC file")->capture_default_str();
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
+  if (profiles_only) {
     profile_times(bench::CallTimer());
     return 0;
-  }
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string arg = argv[i];
-    if (arg == "--blocks") only = std::atoll(argv[i + 1]);
-    else if (arg == "--dir") dir = argv[i + 1];
   }
   if (only > 0) {
     decode_and_plan(only, dir);

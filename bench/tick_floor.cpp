@@ -8,14 +8,19 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "command_line.hpp"
 #include "real_time_process.hpp"
 #include "tick_clock.hpp"
 
 int main(int argc, char** argv) {
-  const double seconds = argc > 1 ? std::atof(argv[1]) : 10;
-  const int64_t period_us = argc > 2 ? std::atoll(argv[2]) : 1000;
-  const int cpu = argc > 3 ? std::atoi(argv[3]) : -1;
-  if (seconds <= 0 || period_us <= 0) return std::fprintf(stderr, "usage: tick_floor [SECONDS] [PERIOD_US] [CPU]\n"), 2;
+  CLI::App app{"tick_floor: the real-time tick alone (RIG-6), its jitter and overruns"};
+  double seconds = 10;
+  int64_t period_us = 1000;
+  int cpu = -1;
+  app.add_option("seconds", seconds, "how long")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("period_us", period_us, "tick period")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("cpu", cpu, "pinned to this CPU (-1: anywhere)")->capture_default_str();
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
   if (cpu >= 0) {
     cpu_set_t one;
     CPU_ZERO(&one);
