@@ -81,7 +81,7 @@ expect_status 2 "$bin/hil" run suite --jobs 0
 expect_status 2 "$bin/hil" run suite --shard 3/2
 expect_output "expected K/N"
 expect_status 2 "$bin/hil" run no/such/folder
-for exe in hil cnc axis_sim plc_sim hil_logger; do
+for exe in hil cnc axis_sim plc_sim hil_logger jerk_cases channel_fuzz planner_bench contour_bench tick_floor; do
   expect_status 0 "$bin/$exe" --version
   grep -q "^$exe [0-9][0-9.]* (git [0-9a-f]\{12\}\(-dirty\)\?)$" last.out || grep -q "(git unknown)" last.out ||
     fail "$exe --version: $(cat last.out)"
