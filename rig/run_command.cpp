@@ -2,9 +2,13 @@
 
 #include <unistd.h>
 
+#include <chrono>
+#include <condition_variable>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <mutex>
+#include <thread>
 
 #include "config_error.hpp"
 #include "scenario_files.hpp"
@@ -28,10 +32,46 @@ void write_results(const SuiteCommand& command, const SuiteResult& suite) {
   if (!command.json_file.empty()) write_json(suite, suite_name(command), command.json_file);
 }
 
+// On a terminal, "running FILE, 0:12" rewritten every second while one
+// scenario runs (a long one would otherwise say nothing until its report).
+class ElapsedLine {
+ public:
+  explicit ElapsedLine(const std::string& file) {
+    if (::isatty(STDOUT_FILENO) != 1) return;
+    thread_ = std::thread([this, file] {
+      const auto start = std::chrono::steady_clock::now();
+      std::unique_lock<std::mutex> lock(mutex_);
+      do {
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::cout << "\rrunning " << file << ", " << format_elapsed(s) << std::flush;
+      } while (!done_.wait_for(lock, std::chrono::seconds(1), [this] { return finished_; }));
+      std::cout << "\r\033[K" << std::flush;
+    });
+  }
+  ~ElapsedLine() {
+    if (!thread_.joinable()) return;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      finished_ = true;
+    }
+    done_.notify_one();
+    thread_.join();
+  }
+
+ private:
+  std::thread thread_;
+  std::mutex mutex_;
+  std::condition_variable done_;
+  bool finished_ = false;
+};
+
 // One file: in this process, its whole report on stdout.
 int run_single(const SuiteCommand& command, RunOptions run) {
   run.scenario_file = command.paths.front();
-  const RunResult result = run_scenario(run);
+  const RunResult result = [&] {
+    ElapsedLine elapsed(run.scenario_file);
+    return run_scenario(run);
+  }();
   std::cout << result.report;
   if (!command.junit_file.empty() || !command.json_file.empty()) {
     SuiteResult suite;
