@@ -68,10 +68,17 @@ class ElapsedLine {
 // One file: in this process, its whole report on stdout.
 int run_single(const SuiteCommand& command, RunOptions run) {
   run.scenario_file = command.paths.front();
-  const RunResult result = [&] {
+  RunResult result;
+  try {
     ElapsedLine elapsed(run.scenario_file);
-    return run_scenario(run);
-  }();
+    result = run_scenario(run);
+  } catch (const ConfigError& e) {
+    // Refused before it ran (exit status 2): CI still gets a result file that says why.
+    SuiteResult refused;
+    refused.runs.push_back({run.scenario_file, "", {}, Outcome::error, 0, 0, e.what(), ""});
+    write_results(command, refused);
+    throw;
+  }
   std::cout << result.report;
   if (!command.junit_file.empty() || !command.json_file.empty()) {
     SuiteResult suite;

@@ -129,7 +129,7 @@ void write_junit(const SuiteResult& suite, const std::string& suite_name, const 
     x << "    <testcase classname=\"" << escape_markup(classname.empty() ? "scenarios" : classname) << "\" name=\""
       << escape_markup(file.stem().string()) << "\" file=\"" << escape_markup(r.scenario_file) << "\" time=\""
       << fixed(r.wall_s, 3) << "\">\n";
-    const std::string report = read_file((fs::path(r.run_dir) / "report.txt").string());
+    const std::string report = r.run_dir.empty() ? "" : read_file((fs::path(r.run_dir) / "report.txt").string());
     if (r.outcome == Outcome::failed)
       x << "      <failure type=\"FAILED\" message=\"" << escape_markup(r.first_failure) << "\">"
         << escape_markup(report) << "</failure>\n";
