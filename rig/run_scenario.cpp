@@ -206,7 +206,11 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
   }
   const double run_wall_s = wall_s();
   result.wall_s = run_wall_s;
-  const std::string node_errors = describe_node_errors(exits, dir.string(), options.in_process);
+  // A participant the scenario kills (RIG-8) ends with SIGKILL on purpose.
+  std::vector<logger::ProcessExit> unplanned;
+  for (const logger::ProcessExit& e : exits)
+    if (!(e.status == 128 + 9 && scenario.faults.kill_cycle(e.name))) unplanned.push_back(e);
+  const std::string node_errors = describe_node_errors(unplanned, dir.string(), options.in_process);
 
   std::optional<logger::CheckReport> check;
   logger::RunLog log;
