@@ -23,26 +23,44 @@ bool parse_channel_state(const std::string& text, ChannelState& state);
 // stop conditions). The channel sets FEEDHOLD, PLC_ACKNOWLEDGE and
 // WAIT_TECHNO_ACK (an M function waits), OVERRIDE_ZERO, DELAY_TIME,
 // IPO_INPUT_EMPTY, CHANNEL_ERROR, M00_OR_M01 with M0_STOP / M1_STOP and
-// INSERT_STOP_AT_DIST (cnc/channel/path_hold.cpp).
+// INSERT_STOP_AT_DIST (cnc/channel/path_hold.cpp). One list, X(NAME, name,
+// bit): the constants below and the names scenarios write (HLI_SC_ dropped,
+// stop_condition_names()) both come from it.
+#define HLI_STOP_CONDITIONS(X)                                                             \
+  X(FEEDHOLD, feedhold, 0x0001)                       /* path feed stop */                   \
+  X(VFG, vfg, 0x0002)                                 /* no axis-specific feed enable */     \
+  X(SINGLE_BLOCK, single_block, 0x0004)                                                      \
+  X(M00_OR_M01, m00_or_m01, 0x0010)                                                          \
+  X(PLC_ACKNOWLEDGE, plc_acknowledge, 0x0020)         /* waiting for the PLC's acknowledgement */ \
+  X(OVERRIDE_ZERO, override_zero, 0x0040)                                                    \
+  X(OVERRIDE_RAPID_ZERO, override_rapid_zero, 0x0080)                                        \
+  X(DELAY_TIME, delay_time, 0x0200)                   /* dwell */                            \
+  X(CHANNEL_SYNC, channel_sync, 0x0800)                                                      \
+  X(IPO_INPUT_EMPTY, ipo_input_empty, 0x1000)                                                \
+  X(IPO_INPUT_DISABLED, ipo_input_disabled, 0x2000)                                          \
+  X(WAIT_FOR_AXES, wait_for_axes, 0x8000)                                                    \
+  X(CHANNEL_ERROR, channel_error, 0x00010000)                                                \
+  X(WAIT_TECHNO_ACK, wait_techno_ack, 0x00020000)     /* M/H/ST function acknowledgement */  \
+  X(M0_STOP, m0_stop, 0x02000000)                                                            \
+  X(M1_STOP, m1_stop, 0x04000000)                                                            \
+  X(INSERT_STOP_AT_DIST, insert_stop_at_dist, 0x08000000)
 namespace stop_condition {
-constexpr int32_t feedhold = 0x0001;               // HLI_SC_FEEDHOLD: path feed stop
-constexpr int32_t vfg = 0x0002;                    // HLI_SC_VFG: no axis-specific feed enable
-constexpr int32_t single_block = 0x0004;           // HLI_SC_SINGLE_BLOCK
-constexpr int32_t m00_or_m01 = 0x0010;             // HLI_SC_M00_OR_M01
-constexpr int32_t plc_acknowledge = 0x0020;        // HLI_SC_PLC_ACKNOWLEDGE: waiting for the PLC's acknowledgement
-constexpr int32_t override_zero = 0x0040;          // HLI_SC_OVERRIDE_ZERO
-constexpr int32_t override_rapid_zero = 0x0080;    // HLI_SC_OVERRIDE_RAPID_ZERO
-constexpr int32_t delay_time = 0x0200;             // HLI_SC_DELAY_TIME: dwell
-constexpr int32_t channel_sync = 0x0800;           // HLI_SC_CHANNEL_SYNC
-constexpr int32_t ipo_input_empty = 0x1000;        // HLI_SC_IPO_INPUT_EMPTY
-constexpr int32_t ipo_input_disabled = 0x2000;     // HLI_SC_IPO_INPUT_DISABLED
-constexpr int32_t wait_for_axes = 0x8000;          // HLI_SC_WAIT_FOR_AXES
-constexpr int32_t channel_error = 0x00010000;      // HLI_SC_CHANNEL_ERROR
-constexpr int32_t wait_techno_ack = 0x00020000;    // HLI_SC_WAIT_TECHNO_ACK: M/H/ST function acknowledgement
-constexpr int32_t m0_stop = 0x02000000;            // HLI_SC_M0_STOP
-constexpr int32_t m1_stop = 0x04000000;            // HLI_SC_M1_STOP
-constexpr int32_t insert_stop_at_dist = 0x08000000;  // HLI_SC_INSERT_STOP_AT_DIST
+#define HIL_STOP_CONDITION_CONSTANT(NAME, name, bit) constexpr int32_t name = bit;
+HLI_STOP_CONDITIONS(HIL_STOP_CONDITION_CONSTANT)
+#undef HIL_STOP_CONDITION_CONSTANT
 }  // namespace stop_condition
+
+// A stop condition bit by the name a scenario writes: "FEEDHOLD" (the
+// HLI_SC_ prefix may be given too, case matters not).
+struct StopConditionName {
+  const char* name;  // without HLI_SC_
+  int32_t bit;
+};
+const std::vector<StopConditionName>& stop_condition_names();
+// The bit, or 0 if no stop condition has that name.
+int32_t find_stop_condition(const std::string& name);
+// "FEEDHOLD|M00_OR_M01", "0" for none; bits without a name as hex.
+std::string stop_conditions_text(int32_t bits);
 
 // The control unit types (HLI_CONTROL_UNIT_FIELDS / HLI_STATE_UNIT_FIELDS),
 // by the type of command_w and state_r.

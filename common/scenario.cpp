@@ -38,19 +38,6 @@ std::vector<std::string> with_hli_fields(std::vector<std::string> keys) {
     if (std::find(keys.begin(), keys.end(), field.name) == keys.end()) keys.push_back(field.name);
   return keys;
 }
-// ... and the per-axis BOOL arrays (lift_active: {Z: true}).
-std::vector<std::string> with_hli_state_fields(std::vector<std::string> keys) {
-  keys = with_hli_fields<HliState>(std::move(keys));
-  for (const HliAxisFlag& flag : hli_axis_flags()) keys.push_back(flag.name);
-  return keys;
-}
-const std::vector<std::string>& condition_keys() {
-  static const std::vector<std::string> keys = with_hli_state_fields(
-      {"cycle", "time_s", "block_nr_r", "block_count_r", "dist_prog_start_mm", "path_standing", "channel_state",
-       "delete_distance_to_go_active_r", "m_function_nr_r"});
-  return keys;
-}
-
 // The bounds on an axis' extremes over an expectation's window.
 struct ExtremeKey {
   const char* key;
@@ -71,24 +58,28 @@ const ExtremeKey* find_extreme_key(const std::string& key) {
   return nullptr;
 }
 
+// An expectation's own keys, then the condition keys it checks at `when`.
 const std::vector<std::string>& expectation_keys() {
   static const std::vector<std::string> keys = [] {
-    std::vector<std::string> own = {"when", "since", "channel_state", "block_nr_r", "block_count_r",
-                                    "dist_prog_start_mm", "tolerance_mm", "delete_distance_to_go_active_r",
-                                    "axis_position_mm", "time_s_at_least", "time_s_at_most",
-                                    "path_velocity_max_at_least_mm_s", "path_velocity_max_at_most_mm_s"};
+    std::vector<std::string> own = {"when", "since", "until", "never", "always", "tolerance_mm",
+                                    "time_s_at_least", "time_s_at_most", "path_velocity_max_at_least_mm_s",
+                                    "path_velocity_max_at_most_mm_s"};
     for (const ExtremeKey& k : extreme_keys) own.push_back(k.key);
-    return with_hli_state_fields(std::move(own));
+    for (const std::string& key : condition_keys())
+      if (std::find(own.begin(), own.end(), key) == own.end()) own.push_back(key);
+    return own;
   }();
   return keys;
 }
+// A never: / always: expectation watches a condition over a window: its
+// other keys belong to an expectation at a moment.
+const std::vector<std::string> watch_keys = {"never", "always", "since", "until"};
 const std::vector<std::string>& control_keys() {
   static const std::vector<std::string> keys = with_hli_fields<HliControl>({});
   return keys;
 }
 
 constexpr int64_t int32_max = std::numeric_limits<int32_t>::max();
-constexpr int64_t int64_max = std::numeric_limits<int64_t>::max();
 // Simulated seconds: the cycle count and the rig's wall-clock bound
 // (20 s a simulated second) stay far inside 64 bits.
 constexpr double max_run_time_s = 1e6;
@@ -113,13 +104,6 @@ YAML::Node load_yaml_file(const fs::path& path, const std::string& what) {
   } catch (const YAML::Exception& e) {
     throw ConfigError(path.string() + ": " + e.what());
   }
-}
-
-ChannelState channel_state_of(const YAML::Node& node, const std::string& where) {
-  ChannelState state{};
-  if (!parse_channel_state(config_text(node, where), state))
-    throw ConfigError(where + ": channel_state must be READY, ACTIVE, PROGRAM_END or ERROR");
-  return state;
 }
 
 // A value for a named HLI field (hli_names.hpp): true / false or a whole
@@ -152,41 +136,9 @@ std::map<std::string, Value> axis_map(const YAML::Node& node, const std::string&
   }
   return out;
 }
-std::map<std::string, bool> axis_flag_map(const YAML::Node& node, const std::string& where) {
-  return axis_map<bool>(node, where, "true or false", config_bool);
-}
 std::map<std::string, double> axis_mm_map(const YAML::Node& node, const std::string& where) {
   return axis_map<double>(node, where, "positions in mm",
                           [](const YAML::Node& n, const std::string& w) { return config_number(n, w); });
-}
-
-// Block numbers (N) and program lines: UDINT in the TF5200 texts, kept in 64 bits.
-int64_t block_number(const ConfigMap& m, const std::string& key) { return m.whole(key, 0, int64_max); }
-
-Condition parse_condition(const YAML::Node& node, const std::string& where) {
-  Condition c;
-  if (node.IsScalar() && node.Scalar() == "program_end") {
-    c.channel_state = ChannelState::program_end;
-    return c;
-  }
-  if (!node.IsMap()) throw ConfigError(where + ": 'when' must be a mapping or 'program_end'");
-  const ConfigMap m(node, where, condition_keys());
-  for (const auto& item : node) {
-    const std::string key = item.first.Scalar();
-    if (key == "cycle") c.cycle = m.whole(key, 0, int64_max);
-    else if (key == "time_s") c.time_s = m.number(key, non_negative);
-    else if (key == "block_nr_r") c.block_nr_r = block_number(m, key);
-    else if (key == "block_count_r") c.block_count_r = block_number(m, key);
-    else if (key == "dist_prog_start_mm") c.dist_prog_start_mm = m.number(key);
-    else if (key == "path_standing") c.path_standing = config_bool(item.second, m.path(key));
-    else if (key == "channel_state") c.channel_state = channel_state_of(item.second, m.path(key));
-    else if (key == "delete_distance_to_go_active_r")
-      c.delete_distance_to_go_active_r = config_bool(item.second, m.path(key));
-    else if (key == "m_function_nr_r") c.m_function_nr_r = static_cast<int32_t>(m.whole(key, 0, int32_max));
-    else if (find_hli_axis_flag(key)) c.axis_flags[key] = axis_flag_map(item.second, m.path(key));
-    else c.fields[key] = hli_field_value<HliState>(key, item.second, where);
-  }
-  return c;
 }
 
 TimelineStep parse_step(const YAML::Node& node, const std::string& where) {
@@ -206,21 +158,28 @@ TimelineStep parse_step(const YAML::Node& node, const std::string& where) {
 Expectation parse_expectation(const YAML::Node& node, const std::string& where) {
   const ConfigMap m(node, where, expectation_keys());
   Expectation e;
-  if (!m.has("when")) throw ConfigError(where + ": 'when' is missing");
-  e.when = parse_condition(m["when"], m.path("when"));
   if (m.has("since")) e.since = parse_condition(m["since"], m.path("since"));
+  if (m.has("never") || m.has("always")) {
+    if (m.has("never") && m.has("always")) throw ConfigError(where + ": give 'never' or 'always', not both");
+    for (const auto& item : node) {
+      const std::string key = item.first.Scalar();
+      if (std::find(watch_keys.begin(), watch_keys.end(), key) == watch_keys.end())
+        throw ConfigError(m.path(key) + ": a never/always expectation takes only never or always, since and until");
+    }
+    const char* key = m.has("never") ? "never" : "always";
+    e.kind = m.has("never") ? Expectation::Kind::never : Expectation::Kind::always;
+    e.watched = parse_condition(m[key], m.path(key));
+    if (m.has("until")) e.until = parse_condition(m["until"], m.path("until"));
+    return e;
+  }
+  if (m.has("until")) throw ConfigError(m.path("until") + ": ends the window of never: or always: (give 'when' here)");
+  if (!m.has("when")) throw ConfigError(where + ": 'when' is missing (or give 'never' or 'always')");
+  e.when = parse_condition(m["when"], m.path("when"));
+  m.get("tolerance_mm", e.tolerance_mm, non_negative);  // before the positions it widens
   for (const auto& item : node) {
     const std::string key = item.first.Scalar();
-    if (key == "when" || key == "since") continue;
-    if (key == "channel_state") e.channel_state = channel_state_of(item.second, m.path(key));
-    else if (key == "block_nr_r") e.block_nr_r = block_number(m, key);
-    else if (key == "block_count_r") e.block_count_r = block_number(m, key);
-    else if (key == "dist_prog_start_mm") e.dist_prog_start_mm = m.number(key);
-    else if (key == "tolerance_mm") e.tolerance_mm = m.number(key, non_negative);
-    else if (key == "delete_distance_to_go_active_r")
-      e.delete_distance_to_go_active_r = config_bool(item.second, m.path(key));
-    else if (key == "axis_position_mm") e.axis_position_mm = axis_mm_map(item.second, m.path(key));
-    else if (key == "time_s_at_least") e.time_s_at_least = m.number(key, non_negative);
+    if (key == "when" || key == "since" || key == "tolerance_mm") continue;
+    if (key == "time_s_at_least") e.time_s_at_least = m.number(key, non_negative);
     else if (key == "time_s_at_most") e.time_s_at_most = m.number(key, non_negative);
     else if (key == "path_velocity_max_at_least_mm_s")
       e.path_velocity_max_at_least_mm_s = m.number(key, non_negative);
@@ -229,10 +188,8 @@ Expectation parse_expectation(const YAML::Node& node, const std::string& where) 
     else if (const ExtremeKey* extreme = find_extreme_key(key)) {
       for (const auto& [axis, mm] : axis_mm_map(item.second, m.path(key)))
         e.extremes.push_back({key, axis, extreme->highest, extreme->bound, mm});
-    } else if (find_hli_axis_flag(key)) {
-      e.axis_flags[key] = axis_flag_map(item.second, m.path(key));
     } else {
-      e.fields[key] = hli_field_value<HliState>(key, item.second, where);
+      parse_condition_key(e.checks, key, item.second, m.path(key), PlainNumber::exactly, e.tolerance_mm);
     }
   }
   // A window no time fits is a mistake in the file, not a check.
@@ -281,46 +238,6 @@ std::vector<T> parse_list(const YAML::Node& node, const std::string& name, Parse
 }
 
 }  // namespace
-
-bool Condition::holds(const HliState& s, double cycle_time_s) const {
-  if (cycle && s.cycle < *cycle) return false;
-  if (time_s && s.cycle * cycle_time_s + 1e-12 < *time_s) return false;
-  if (block_nr_r && s.block_nr_r != *block_nr_r) return false;
-  if (block_count_r && s.block_count_r != *block_count_r) return false;
-  if (dist_prog_start_mm && s.dist_prog_start / hli_units_per_mm < *dist_prog_start_mm) return false;
-  if (path_standing && (s.path_velocity == 0) != *path_standing) return false;
-  if (channel_state && s.channel_state != *channel_state) return false;
-  if (delete_distance_to_go_active_r && s.delete_distance_to_go_active_r != *delete_distance_to_go_active_r)
-    return false;
-  if (m_function_nr_r && !(s.m_function_request_r && s.m_function_nr_r == *m_function_nr_r)) return false;
-  for (const auto& [name, value] : fields)
-    if (read_hli_field(s, name) != value) return false;
-  for (const auto& [name, axes] : axis_flags) {
-    const HliAxisFlag* flag = find_hli_axis_flag(name);
-    for (const auto& [axis, value] : axes)
-      if (!flag || flag->read(s, axis) != value) return false;
-  }
-  return true;
-}
-
-std::string Condition::describe() const {
-  std::ostringstream out;
-  const char* sep = "";
-  if (cycle) out << sep << "cycle>=" << *cycle, sep = " ";
-  if (time_s) out << sep << "time_s>=" << *time_s, sep = " ";
-  if (block_nr_r) out << sep << "block_nr_r=" << *block_nr_r, sep = " ";
-  if (block_count_r) out << sep << "block_count_r=" << *block_count_r, sep = " ";
-  if (dist_prog_start_mm) out << sep << "dist_prog_start_mm>=" << *dist_prog_start_mm, sep = " ";
-  if (path_standing) out << sep << "path_standing=" << (*path_standing ? "true" : "false"), sep = " ";
-  if (channel_state) out << sep << "channel_state=" << to_string(*channel_state), sep = " ";
-  if (delete_distance_to_go_active_r)
-    out << sep << "delete_distance_to_go_active_r=" << (*delete_distance_to_go_active_r ? "true" : "false"), sep = " ";
-  if (m_function_nr_r) out << sep << "m_function_nr_r=" << *m_function_nr_r, sep = " ";
-  for (const auto& [name, value] : fields) out << sep << name << "=" << value, sep = " ";
-  for (const auto& [name, axes] : axis_flags)
-    for (const auto& [axis, value] : axes) out << sep << name << "." << axis << "=" << (value ? "true" : "false"), sep = " ";
-  return out.str();
-}
 
 std::string nc_text_problem(const std::string& text) {
   size_t line = 1;
@@ -385,21 +302,19 @@ Scenario read_scenario(const YAML::Node& root, const MachineConfig* machine) {
   auto on_machine = [&](const std::string& axis, const std::string& where) {
     if (s.machine.axis_index(axis) < 0) throw ConfigError(where + ": axis '" + axis + "' is not on the machine");
   };
-  auto flags_on_machine = [&](const std::map<std::string, std::map<std::string, bool>>& flags,
-                              const std::string& where) {
-    for (const auto& [name, axes] : flags)
-      for (const auto& axis : axes) on_machine(axis.first, where + "." + name);
+  auto axes_on_machine = [&](const Condition& c, const std::string& where) {
+    for (const auto& [key, axis] : c.axes()) on_machine(axis, key_path(where, key));
   };
-  for (size_t i = 0; i < s.timeline.size(); ++i)
-    flags_on_machine(s.timeline[i].when.axis_flags, index_path("plc.timeline", i) + ".when");
+  for (size_t i = 0; i < s.timeline.size(); ++i) axes_on_machine(s.timeline[i].when, index_path("plc.timeline", i) + ".when");
   for (size_t i = 0; i < s.expectations.size(); ++i) {
     const Expectation& e = s.expectations[i];
     const std::string where = index_path("expect", i);
-    for (const auto& axis : e.axis_position_mm) on_machine(axis.first, where + ".axis_position_mm");
     for (const ExtremeCheck& x : e.extremes) on_machine(x.axis, where + "." + x.key);
-    flags_on_machine(e.when.axis_flags, where + ".when");
-    if (e.since) flags_on_machine(e.since->axis_flags, where + ".since");
-    flags_on_machine(e.axis_flags, where);
+    axes_on_machine(e.when, where + ".when");
+    if (e.since) axes_on_machine(*e.since, where + ".since");
+    if (e.until) axes_on_machine(*e.until, where + ".until");
+    axes_on_machine(e.watched, where + (e.kind == Expectation::Kind::never ? ".never" : ".always"));
+    axes_on_machine(e.checks, where);
   }
   s.resolved = root;
   return s;

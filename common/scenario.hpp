@@ -9,33 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "condition.hpp"
 #include "event.hpp"
 #include "hli.hpp"
 #include "fault_plan.hpp"
 #include "machine_config.hpp"
 
 namespace hil {
-
-// A conjunction of predicates on the HLI state; a trigger fires the first
-// cycle in which all of them hold.
-struct Condition {
-  std::optional<int64_t> cycle;               // cycle >= value
-  std::optional<double> time_s;               // cycle * cycle time >= value
-  std::optional<int64_t> block_nr_r;          // == value
-  std::optional<int64_t> block_count_r;       // == value
-  std::optional<double> dist_prog_start_mm;   // covered distance >= value
-  std::optional<bool> path_standing;          // path_velocity == 0 (true) or > 0 (false)
-  std::optional<ChannelState> channel_state;  // == value
-  std::optional<bool> delete_distance_to_go_active_r;  // == value
-  std::optional<int32_t> m_function_nr_r;     // this M function waits for acknowledgement
-  // Other HLI state fields by name (hli_names.hpp), == value.
-  std::map<std::string, int64_t> fields;
-  // Per-axis BOOL arrays by name, per axis: {"lift_active": {"Z": true}}.
-  std::map<std::string, std::map<std::string, bool>> axis_flags;
-
-  bool holds(const HliState& state, double cycle_time_s) const;
-  std::string describe() const;
-};
 
 // One write to a control unit field, e.g. "program_start.command_w": true
 // or "override.command_w": 500 (true / false are 1 / 0). The loader checks
@@ -61,21 +41,21 @@ struct ExtremeCheck {
   double mm = 0;
 };
 
-// Checks on the HLI state at the moment `when` first holds. With `since`,
-// the expectation has a window: from the first cycle `since` holds on
-// (without: from the run's start), `when` is looked for from there; the
-// extremes and the time are taken over that window.
+// An expectation on the HLI state over a window: from the first cycle
+// `since` holds on (without: from the run's start).
+//  - at: `checks` must hold at the first cycle of the window `when` holds
+//    in; the extremes and the time are taken over the window up to it.
+//  - never / always: `watched` must hold in no / every cycle of the window,
+//    which ends before the first cycle after its start `until` holds in
+//    (without: at the run's end).
 struct Expectation {
+  enum class Kind { at, never, always };
+  Kind kind = Kind::at;
   Condition when;
   std::optional<Condition> since;
-  std::optional<ChannelState> channel_state;
-  std::optional<int64_t> block_nr_r;
-  std::optional<int64_t> block_count_r;
-  std::optional<double> dist_prog_start_mm;
-  std::optional<bool> delete_distance_to_go_active_r;
-  std::map<std::string, double> axis_position_mm;
-  std::map<std::string, int64_t> fields;  // other HLI state fields (hli_names.hpp)
-  std::map<std::string, std::map<std::string, bool>> axis_flags;  // lift_active: {Z: true}
+  std::optional<Condition> until;
+  Condition watched;
+  Condition checks;  // plain numbers exact (positions and distance within tolerance_mm)
   std::vector<ExtremeCheck> extremes;
   // The time from the window's start to the cycle `when` first held.
   std::optional<double> time_s_at_least, time_s_at_most;

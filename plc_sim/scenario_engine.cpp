@@ -17,9 +17,17 @@ std::string axis_extreme_text(const ExtremeCheck& x, double mm) {
   return out.str();
 }
 
-// "at block_nr_r=40", "at program_end since channel_state=ACTIVE"
+// "at block_nr_r=40", "at program_end since channel_state=ACTIVE",
+// "never axis_position_mm.X>=100.001 since block_nr_r=20 until channel_state=PROGRAM_END"
 std::string what(const Expectation& e) {
-  return "at " + e.when.describe() + (e.since ? " since " + e.since->describe() : "");
+  const std::string window =
+      (e.since ? " since " + e.since->describe() : "") + (e.until ? " until " + e.until->describe() : "");
+  switch (e.kind) {
+    case Expectation::Kind::never: return "never " + e.watched.describe() + window;
+    case Expectation::Kind::always: return "always " + e.watched.describe() + window;
+    case Expectation::Kind::at: break;
+  }
+  return "at " + e.when.describe() + window;
 }
 
 std::string mm_text(double mm) {
@@ -65,13 +73,20 @@ const HliControl& ScenarioEngine::cycle(const HliState& state) {
     fired_[i] = true;
     for (const ControlWrite& write : timeline_[i].set) write_hli_field(control_, write.field, write.value);
   }
+  // A state lost on the way (RIG-8) is a cycle no never: / always: saw.
+  const bool missed_cycles = state.cycle > last_cycle_ + 1;
   for (Pending& p : pending_) {
     if (p.reached) continue;
+    const bool was_open = p.opened;
     if (!p.opened && p.expectation.since->holds(state, cycle_time_s_)) {
       p.opened = true;
       p.opened_cycle = state.cycle;
     }
     if (!p.opened) continue;
+    if (p.expectation.kind != Expectation::Kind::at) {
+      watch(p, state, was_open && missed_cycles);
+      continue;
+    }
     p.path_velocity_max = std::max(p.path_velocity_max, std::abs(state.path_velocity));
     for (const ExtremeCheck& x : p.expectation.extremes) {
       for (size_t i = 0; i < state.axis_name.size() && i < state.axis_position_r.size(); ++i) {
@@ -86,8 +101,36 @@ const HliControl& ScenarioEngine::cycle(const HliState& state) {
     if (!p.expectation.when.holds(state, cycle_time_s_)) continue;
     p.reached = true;
     p.result = evaluate(p, state);
+    p.result.cycle = state.cycle;
   }
+  last_cycle_ = state.cycle;
   return control_;
+}
+
+void ScenarioEngine::watch(Pending& p, const HliState& state, bool missed_cycles) {
+  const Expectation& e = p.expectation;
+  auto decide = [&](bool passed, const std::string& detail) {
+    p.reached = true;
+    p.result = {what(e), passed, detail, state.cycle};
+  };
+  // `until` ends the window before its cycle; looked for from the window's
+  // second cycle on, so that a window holds one cycle at least.
+  if (e.until && state.cycle > p.opened_cycle && e.until->holds(state, cycle_time_s_)) {
+    decide(true, " held in cycles " + std::to_string(p.opened_cycle) + ".." + std::to_string(last_cycle_));
+    return;
+  }
+  // A cycle not seen might have broken it: no PASS on a guess.
+  if (missed_cycles) {
+    decide(false, " cycles " + std::to_string(last_cycle_ + 1) + ".." + std::to_string(state.cycle - 1) +
+                      " not seen by the PLC: not checked");
+    return;
+  }
+  std::string broken;
+  const bool holds = e.watched.check(state, cycle_time_s_, &broken);
+  if (e.kind == Expectation::Kind::never && holds)
+    decide(false, " broken in cycle " + std::to_string(state.cycle) + ": " + e.watched.seen(state, cycle_time_s_));
+  else if (e.kind == Expectation::Kind::always && !holds)
+    decide(false, " broken in cycle " + std::to_string(state.cycle) + ":" + broken);
 }
 
 void ScenarioEngine::observe(const Event& event) { seen_events_.push_back(event); }
@@ -100,43 +143,8 @@ ExpectationResult ScenarioEngine::evaluate(const Pending& p, const HliState& s) 
   auto check = [&](bool ok, const std::string& text) {
     if (!ok) failures << ' ' << text << ';';
   };
-  if (e.channel_state)
-    check(s.channel_state == *e.channel_state, std::string("channel_state ") + to_string(s.channel_state) +
-                                                   " != " + to_string(*e.channel_state));
-  if (e.block_nr_r)
-    check(s.block_nr_r == *e.block_nr_r,
-          "block_nr_r " + std::to_string(s.block_nr_r) + " != " + std::to_string(*e.block_nr_r));
-  if (e.block_count_r)
-    check(s.block_count_r == *e.block_count_r,
-          "block_count_r " + std::to_string(s.block_count_r) + " != " + std::to_string(*e.block_count_r));
-  if (e.dist_prog_start_mm) {
-    const double mm = s.dist_prog_start / hli_units_per_mm;
-    check(std::abs(mm - *e.dist_prog_start_mm) <= e.tolerance_mm,
-          "dist_prog_start " + std::to_string(mm) + " mm != " + std::to_string(*e.dist_prog_start_mm));
-  }
-  if (e.delete_distance_to_go_active_r)
-    check(s.delete_distance_to_go_active_r == *e.delete_distance_to_go_active_r,
-          std::string("delete_distance_to_go_active_r ") + (s.delete_distance_to_go_active_r ? "true" : "false"));
-  for (const auto& [name, expected] : e.fields) {
-    const int64_t value = read_hli_field(s, name).value_or(0);
-    check(value == expected, name + " " + std::to_string(value) + " != " + std::to_string(expected));
-  }
-  for (const auto& [axis, expected] : e.axis_position_mm) {
-    for (size_t i = 0; i < s.axis_name.size(); ++i) {
-      if (s.axis_name[i] != axis) continue;
-      const double mm = static_cast<double>(s.axis_position_r[i]) / hli_units_per_mm;
-      check(std::abs(mm - expected) <= e.tolerance_mm,
-            axis + " at " + std::to_string(mm) + " mm != " + std::to_string(expected));
-    }
-  }
-  for (const auto& [name, axes] : e.axis_flags) {
-    const HliAxisFlag* flag = find_hli_axis_flag(name);
-    for (const auto& [axis, expected] : axes) {
-      const std::optional<bool> read = flag ? flag->read(s, axis) : std::nullopt;
-      const bool known = read.has_value(), value = read.value_or(false);
-      check(known && value == expected, name + " of " + axis + " " + (known ? (value ? "true" : "false") : "missing"));
-    }
-  }
+  std::string broken;
+  if (!e.checks.check(s, cycle_time_s_, &broken)) failures << broken;
   for (const ExtremeCheck& x : e.extremes) {
     const auto seen = p.extremes.find(x.axis);
     if (seen == p.extremes.end()) {
@@ -178,12 +186,25 @@ ExpectationResult ScenarioEngine::evaluate(const Pending& p, const HliState& s) 
   return r;
 }
 
-std::vector<ExpectationResult> ScenarioEngine::finish() const {
+std::vector<ExpectationResult> ScenarioEngine::finish(std::optional<int64_t> end_cycle) const {
   std::vector<ExpectationResult> results;
+  const int64_t last = end_cycle.value_or(last_cycle_);
   for (const Pending& p : pending_) {
+    const Expectation& e = p.expectation;
     if (p.reached) results.push_back(p.result);
-    else if (!p.opened) results.push_back({what(p.expectation), false, " 'since' never held"});
-    else results.push_back({what(p.expectation), false, " never reached"});
+    else if (!p.opened) results.push_back({what(e), false, " 'since' never held", std::nullopt});
+    else if (e.kind == Expectation::Kind::at) results.push_back({what(e), false, " never reached", std::nullopt});
+    // A window `until` should have closed stays open: the run did not go where the scenario says.
+    else if (e.until) results.push_back({what(e), false, " 'until' never held", std::nullopt});
+    else if (last_cycle_ < last)
+      results.push_back({what(e), false,
+                         " the PLC saw cycles up to " + std::to_string(last_cycle_) + " of " + std::to_string(last) +
+                             ": not checked to the end",
+                         std::nullopt});
+    else
+      results.push_back({what(e), true,
+                         " held in cycles " + std::to_string(p.opened_cycle) + ".." + std::to_string(last_cycle_),
+                         std::nullopt});
   }
   auto matches = [](const EventExpectation& x, const Event& e) {
     return (!x.id || e.id == *x.id) && e.severity == x.severity && (x.nc_line == 0 || e.nc_line == x.nc_line) &&
@@ -205,7 +226,7 @@ std::vector<ExpectationResult> ScenarioEngine::finish() const {
       if (e.severity != Severity::error) continue;
       bool expected = false;
       for (const EventExpectation& x : expected_events_) expected = expected || (!x.absent && matches(x, e));
-      if (!expected) results.push_back({"no unexpected error", false, " " + describe(e)});
+      if (!expected) results.push_back({"no unexpected error", false, " " + describe(e), std::nullopt});
     }
   }
   return results;

@@ -2,6 +2,7 @@
 // The PLC simulator's program (RIG-5): runs a scenario's timeline against
 // the HLI, cycle by cycle, and checks its expectations.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,9 @@ struct ExpectationResult {
   std::string what;
   bool passed = false;
   std::string detail;
+  // The HLI cycle it was decided in; none: at the run's end (never reached,
+  // a whole-run window, an event expectation).
+  std::optional<int64_t> cycle;
 };
 
 class ScenarioEngine {
@@ -26,8 +30,11 @@ class ScenarioEngine {
   const HliControl& cycle(const HliState& state);
   // An event seen on the bus (from any node but this one).
   void observe(const Event& event);
-  // Verdict at the end of the run: one result per expectation.
-  std::vector<ExpectationResult> finish() const;
+  // Verdict at the end of the run: one result per expectation. `end_cycle`:
+  // the run's last cycle (the CNC's RUN_END); a whole-run never: / always:
+  // passes only if the PLC saw every cycle up to it. Without: the last
+  // cycle seen.
+  std::vector<ExpectationResult> finish(std::optional<int64_t> end_cycle = std::nullopt) const;
 
  private:
   // An axis' highest and lowest commanded position over a window.
@@ -41,10 +48,12 @@ class ScenarioEngine {
     int64_t opened_cycle = 0;
     std::map<std::string, Extremes> extremes;  // by axis, over the window
     double path_velocity_max = 0;              // |path_velocity|, over the window
-    bool reached = false;
+    bool reached = false;  // decided
     ExpectationResult result;
   };
   ExpectationResult evaluate(const Pending& p, const HliState& state) const;
+  // never: / always: in an open window; decides p on a break or the window's end.
+  void watch(Pending& p, const HliState& state, bool missed_cycles);
 
   std::vector<TimelineStep> timeline_;
   std::vector<bool> fired_;
@@ -55,6 +64,7 @@ class ScenarioEngine {
   int m_function_ack_cycles_;
   int m_function_waited_ = 0;  // cycles the current M function has waited
   double cycle_time_s_;
+  int64_t last_cycle_ = -1;  // the last HLI state seen
   HliControl control_;
 };
 

@@ -27,13 +27,15 @@ PlcSimNode::PlcSimNode(const Scenario& scenario, lcm_support::Inbox& inbox)
 
 int PlcSimNode::report(int64_t cycle) {
   int published = 0;
-  for (const ExpectationResult& r : engine_.finish()) {
+  for (const ExpectationResult& r : engine_.finish(cycle)) {
     Event e;
     e.severity = r.passed ? Severity::info : Severity::error;
     e.verdict = r.passed ? Verdict::pass : Verdict::fail;  // what the rig counts
     e.message = std::string(r.passed ? "PASS " : "FAIL ") + r.what + ":" + r.detail;
     (r.passed ? spdlog::info("{}", e.message) : spdlog::error("{}", e.message));
-    hil::event_t m = lcm_support::to_message(e, cycle, utime_, source);
+    // Stamped with the cycle it was decided in; published at the end, when
+    // the run's last cycle is known (whole-run windows, events never seen).
+    hil::event_t m = lcm_support::to_message(e, r.cycle.value_or(cycle), utime_, source);
     m.run_id = run_id_;
     bus_.publish(channels::event, m);
     ++published;

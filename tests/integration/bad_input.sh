@@ -42,3 +42,13 @@ printf 'N10 G01 X1 F600\nN20 X\0002\nN30 M30\n' >"$WORK/binary.nc"
 printf 'name: x\nmachine: %s\nnc_file: binary.nc\n' "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/binary.yaml"
 expect_status 2 "$hil" run "$WORK/binary.yaml" --out "$WORK/run8" --port 7747
 expect_output "binary.nc: line 2: byte 0x00 (NUL) is not text"
+# RIG-5 (issue 19): a range no value fits, and a stop condition nobody has,
+# are refused before the rig starts, naming the key (and the name meant).
+printf 'name: x\nmachine: %s\nnc_program: "M30"\nexpect:\n  - never: {path_velocity_mm_s: {min: 5, max: 4}}\n' \
+  "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/range.yaml"
+expect_status 2 "$hil" run "$WORK/range.yaml" --out "$WORK/run9" --port 7748
+expect_output "range.yaml: expect[0].never.path_velocity_mm_s: min 5 is more than max 4"
+printf 'name: x\nmachine: %s\nnc_program: "M30"\nexpect:\n  - when: {stop_conditions_r: {contains: [FEED_HOLD]}}\n' \
+  "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/stop_name.yaml"
+expect_status 2 "$hil" run "$WORK/stop_name.yaml" --out "$WORK/run10" --port 7749
+expect_output "expect[0].when.stop_conditions_r.contains[0]: unknown stop condition 'FEED_HOLD', did you mean FEEDHOLD?"

@@ -135,7 +135,7 @@ TEST_CASE("RIG-5 scenario: a failed check says what was found", "[scenario]") {
   const auto results = engine.finish();
   REQUIRE(results.size() == 1);
   CHECK_FALSE(results[0].passed);
-  CHECK_THAT(results[0].detail, Catch::Contains("X at 1.000000 mm != 2.000000"));
+  CHECK_THAT(results[0].detail, Catch::Contains("axis_position_mm.X 1, expected 1.999<=axis_position_mm.X<=2.001"));
 }
 
 TEST_CASE("RIG-3 machine: P-AXIS-00441/00442 below 1000 (limit under a_max) are refused", "[scenario]") {
@@ -293,7 +293,7 @@ expect:
   CHECK(results[0].passed);
   CHECK_THAT(results[0].what, Catch::Contains("lift_active.Z=true"));
   CHECK_FALSE(results[1].passed);
-  CHECK_THAT(results[1].detail, Catch::Contains("lift_active of Z false"));
+  CHECK_THAT(results[1].detail, Catch::Contains("lift_active.Z false != true"));
   // Per axis only: a BOOL, an unknown axis, a non-BOOL value are refused.
   CHECK_THROWS_WITH(lift_scenario("expect:\n  - when: program_end\n    lift_active: true\n"),
                     Catch::Contains("expect[0].lift_active: must map axis names to true or false"));
