@@ -175,9 +175,11 @@ void each_predicate(const Condition& c, const HliState& s, double cycle_time_s, 
     const HliAxisFlag* f = find_hli_axis_flag(name);
     for (const auto& [axis, want] : axes) {
       const std::optional<bool> value = f ? f->read(s, axis) : std::nullopt;
+      // value_or, not *value: g++ 12 -O2 takes *value for a read of an unset bool.
+      const bool seen = value.has_value(), flag = value.value_or(false);
       const std::string full = name + "." + axis;
-      if (!visit(full, value ? std::string(bool_text(*value)) : std::string("missing"),
-                 full + "=" + bool_text(want), value && *value == want, true))
+      if (!visit(full, seen ? std::string(bool_text(flag)) : std::string("missing"), full + "=" + bool_text(want),
+                 seen && flag == want, true))
         return;
     }
   }
