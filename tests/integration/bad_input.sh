@@ -35,9 +35,10 @@ printf 'name: x\nmachine: %s\nnc_program: "M30"\nrun: {max_time_s: .nan}\n' \
   "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/nan.yaml"
 expect_status 2 "$hil" run "$WORK/nan.yaml" --out "$WORK/run6" --port 7745
 expect_output "nan.yaml: run.max_time_s: must be a number > 0 and <= 1e+06, not .nan"
+# A folder is a suite (docs/SUITES.md): one without scenario files is refused.
 mkdir -p "$WORK/folder"
 expect_status 2 "$hil" run "$WORK/folder" --out "$WORK/run7" --port 7746
-expect_output "folder: scenario is a directory, not a file"
+expect_output "folder: a folder without scenario files (*.yaml)"
 printf 'N10 G01 X1 F600\nN20 X\0002\nN30 M30\n' >"$WORK/binary.nc"
 printf 'name: x\nmachine: %s\nnc_file: binary.nc\n' "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/binary.yaml"
 expect_status 2 "$hil" run "$WORK/binary.yaml" --out "$WORK/run8" --port 7747
