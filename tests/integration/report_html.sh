@@ -3,8 +3,8 @@
 # as processes; a scenario with variants: one per variant and one for the
 # set) and in a suite's folder: well-formed HTML (every element closed, as
 # Python's html.parser sees it), the verdict, the expectations PASS/FAIL,
-# the plots embedded as PNG data: URIs; the suite page's links lead to the
-# run pages that exist.
+# the plots embedded as PNG data: URIs (or why there are none); the suite
+# page's links lead to the run pages that exist.
 . "$(dirname "$0")/lib.sh"
 scenarios="$HIL_SOURCE/tests/integration/scenarios"
 cd "$WORK"
@@ -17,8 +17,10 @@ sed -e "s|^machine: .*|machine: $HIL_SOURCE/config/xyz_machine.yaml|" \
 
 expect_status 1 "$hil" run suite --in-process --out runs
 expect_output "4 scenario(s): 2 passed, 1 failed, 1 error(s), 0 skipped"
-# As processes, one file.
+# As processes, one file; and one whose nodes cannot start (no multicast
+# route): a page all the same, saying why there is nothing to show.
 expect_status 0 "$hil" run suite/a_short_move.yaml --out proc --port 7851
+expect_status 1 unshare -n sh -c "ip link set lo up && exec \"$hil\" run suite/a_short_move.yaml --out noroute"
 
 python3 - <<'PY'
 import base64, html.parser, os, re
@@ -80,6 +82,10 @@ for l in variant_links:
     v = Page(os.path.join("runs/suite/d_variants", l))
     assert "PASSED" in v.text and pngs(v) >= 1
 assert pngs(s) >= 1  # the comparison plots
+
+p = Page("noroute/report.html")
+assert '<span class="verdict FAILED">FAILED</span>' in p.raw and "because" in p.text
+assert "No plots: the run left no log" in p.text and "cannot open LCM" in p.text, p.text[:2000]
 
 # The suite: the table, every link to a file that exists, the runs' pages.
 s = Page("runs/report.html")
