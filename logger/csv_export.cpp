@@ -19,6 +19,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -356,10 +357,16 @@ struct ChannelPass {
   std::unique_ptr<std::ofstream> out;
 };
 
-std::string file_name(const std::string& channel) {
+// The channel's name as a file name; another channel's file already named
+// so (channels that differ only in characters a file name cannot hold):
+// "_2", "_3" appended.
+std::string file_name(const std::string& channel, std::set<std::string>& taken) {
   std::string name;
   for (const char c : channel) name += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
-  return (name.empty() ? "_" : name) + ".csv";
+  if (name.empty()) name = "_";
+  std::string file = name + ".csv";
+  for (int n = 2; !taken.insert(file).second; ++n) file = name + "_" + std::to_string(n) + ".csv";
+  return file;
 }
 
 std::unique_ptr<lcm::LogFile> open_log(const std::string& path) {
@@ -414,6 +421,7 @@ CsvExport export_csv(const std::string& log_path, const std::string& dir) {
   if (result.messages == 0) throw std::runtime_error(log_path + " is not an LCM event log (no event found)");
 
   fs::create_directories(dir);
+  std::set<std::string> files;
   for (const std::string& channel : order) {
     ChannelPass& c = channels[channel];
     if (!c.kind) {
@@ -423,7 +431,7 @@ CsvExport export_csv(const std::string& log_path, const std::string& dir) {
     CsvChannel out;
     out.channel = channel;
     out.type = c.kind->type;
-    out.file = (fs::path(dir) / file_name(channel)).string();
+    out.file = (fs::path(dir) / file_name(channel, files)).string();
     out.simulated_time = c.kind->simulated_time && result.cycle_s;
     c.out = std::make_unique<std::ofstream>(out.file);
     if (!*c.out) throw std::runtime_error("cannot write " + out.file);

@@ -1,5 +1,6 @@
 #include "export_command.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>

@@ -137,13 +137,14 @@ TEST_CASE("RIG-4 export: every channel a CSV file, SI units, RFC 4180 strings, u
     write_bytes(log, "HIL_EVENT", encoded(event), 1'000'700);
 
     write_bytes(log, "SOMEONE_ELSES", {1, 2, 3, 4, 5, 6, 7, 8, 9, 10}, 1'000'800);
+    write_bytes(log, "AXIS/X_CMD", encoded(x), 1'000'900);  // the same file name as AXIS_X_CMD
   }
 
   const logger::CsvExport result = logger::export_csv(log_path, (dir / "csv").string());
-  CHECK(result.messages == 8);
+  CHECK(result.messages == 9);
   REQUIRE(result.cycle_s);
   CHECK(*result.cycle_s == Approx(0.002));
-  REQUIRE(result.channels.size() == 5);
+  REQUIRE(result.channels.size() == 6);
   std::map<std::string, logger::CsvChannel> by;
   for (const auto& ch : result.channels) by[ch.channel] = ch;
   CHECK(by["HLI_STATE"].type == "hli_state_t");
@@ -153,6 +154,8 @@ TEST_CASE("RIG-4 export: every channel a CSV file, SI units, RFC 4180 strings, u
   REQUIRE(result.unknown.size() == 1);
   CHECK(result.unknown[0] == std::make_pair(std::string("SOMEONE_ELSES"), int64_t{1}));
   CHECK(!fs::exists(dir / "csv" / "SOMEONE_ELSES.csv"));
+  CHECK(fs::path(by["AXIS/X_CMD"].file).filename() == "AXIS_X_CMD_2.csv");
+  CHECK(read_csv(by["AXIS/X_CMD"].file).size() == 2);
 
   const auto cmd = read_csv((dir / "csv" / "AXIS_X_CMD.csv").string());
   REQUIRE(cmd.size() == 2);
