@@ -7,6 +7,7 @@
 
 #include "command_line.hpp"
 #include "config_error.hpp"
+#include "export_command.hpp"
 #include "plots.hpp"
 #include "report.hpp"
 #include "run_log.hpp"
@@ -127,6 +128,11 @@ int main(int argc, char** argv) {
                "difference or 'identical' (RIG-7)");
   rerun_cmd->add_option("log", log_file, "LCM event log of a rig run")->required()->check(CLI::ExistingFile);
 
+  std::string csv_dir;
+  auto* export_cmd = app.add_subcommand("export", "a log as CSV files, one per channel, SI units (RIG-4, docs/EXPORT.md)");
+  export_cmd->add_option("log", log_file, "LCM event log")->required()->check(CLI::ExistingFile);
+  export_cmd->add_option("--csv", csv_dir, "folder for the CSV files")->required();
+
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   if (*spy_cmd) return hil::rig::exec_spy(run.bin_dir, spy_source, speed);
   if (*replay_cmd) return hil::rig::exec_replay(log_file, replay_url, speed);
@@ -135,6 +141,7 @@ int main(int argc, char** argv) {
   try {
     if (*run_cmd) return hil::rig::run_scenarios(suite, run);
     if (*check_cmd) return check_log(log_file, plot_dir);
+    if (*export_cmd) return hil::rig::export_csv_command(log_file, csv_dir);
     if (*compare_cmd) {
       const std::string difference = hil::logger::compare_run_logs(pair[0], pair[1]);
       std::cout << (difference.empty() ? "identical" : difference) << '\n';

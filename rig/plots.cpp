@@ -7,7 +7,8 @@
 
 namespace hil::rig {
 
-std::string draw_plots(const logger::RunLog& log, const logger::CheckReport& report, const std::string& dir) {
+std::string draw_plots(const logger::RunLog& log, const logger::CheckReport& report, const std::string& dir,
+                       std::vector<std::string>* drawn) {
   namespace fs = std::filesystem;
   logger::PlotFiles files;
   try {
@@ -25,6 +26,7 @@ std::string draw_plots(const logger::RunLog& log, const logger::CheckReport& rep
   const int code = status ? *status : gnuplot.stop();
   if (code == 127) return "plots: gnuplot not found (apt-get install gnuplot-nox); data and script in " + dir;
   if (code != 0) return "plots: gnuplot failed (" + (folder / "gnuplot.out").string() + ")";
+  if (drawn) *drawn = files.images;
   std::string names;
   for (const auto& image : files.images) names += (names.empty() ? "" : ", ") + fs::path(image).filename().string();
   return "plots: " + dir + "/ (" + names + ")";

@@ -52,7 +52,7 @@ int count_errors(const logger::RunLog& log) {
   return errors;
 }
 
-std::string format_check(const logger::RunLog& log, const logger::CheckReport& report) {
+std::string format_limits(const logger::CheckReport& report) {
   std::ostringstream out;
   // Per axis: the largest value of each quantity, its limit and the margin
   // left (negative: the limit was exceeded).
@@ -98,6 +98,12 @@ std::string format_check(const logger::RunLog& log, const logger::CheckReport& r
     out << "  t=" << fmt("%.4f", v.time_s, 0) << ".." << fmt("%.4f s", v.end_time_s, 0) << " (" << v.cycles
         << " cycles) axis " << v.axis << ": " << v.quantity << " up to " << v.value << " at t="
         << fmt("%.4f s", v.worst_time_s, 0) << ", limit " << v.limit << '\n';
+  return out.str();
+}
+
+std::string format_check(const logger::RunLog& log, const logger::CheckReport& report) {
+  std::ostringstream out;
+  out << format_limits(report);
   int warnings = 0;
   for (const auto& e : log.events) warnings += e.event.severity == Severity::warning ? 1 : 0;
   out << "events: " << count_errors(log) << " errors, " << warnings << " warnings\n";

@@ -10,6 +10,8 @@ namespace hil::rig {
 
 // Per-axis table, violations, events and the PLC's expectation results.
 std::string format_check(const logger::RunLog& log, const logger::CheckReport& report);
+// The first part of it: the per-axis table and the violations.
+std::string format_limits(const logger::CheckReport& report);
 
 // RIG-6 real-time mode: the CNC's tick jitter and overruns, each
 // participant's answers (the last HIL_RT_STATS) and how each node was

@@ -12,6 +12,7 @@
 
 #include "config_error.hpp"
 #include "scenario_files.hpp"
+#include "suite_page.hpp"
 #include "suite_progress.hpp"
 #include "suite_results.hpp"
 #include "suite_run.hpp"
@@ -119,6 +120,7 @@ int run_scenarios(const SuiteCommand& command, const RunOptions& run) {
   const std::string table = format_summary_table(suite);
   std::cout << '\n' << table;
   std::ofstream(fs::path(options.out_dir) / "summary.txt") << table;
+  write_suite_page(suite, suite_name(command));
   write_results(command, suite);
   return suite.passed() ? 0 : 1;
 }

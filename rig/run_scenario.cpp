@@ -22,6 +22,7 @@
 #include "report.hpp"
 #include "run_identity.hpp"
 #include "run_log.hpp"
+#include "run_page.hpp"
 #include "run_summary.hpp"
 #include "scenario.hpp"
 #include "scenario_engine.hpp"
@@ -227,6 +228,7 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
     result.report = out.str();
     result.first_failure = verdict.reasons.empty() ? e.what() : verdict.reasons.front();
     std::ofstream(dir / "report.txt") << result.report;
+    write_run_page(scenario, result, verdict, log, nullptr, {{}, "the run left no log"});
     if (figures) *figures = figures_of(variant, false, log, nullptr);
     return result;
   }
@@ -285,10 +287,13 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
       << " failed; the scenario has " << log.facts.expectations << ", plc_sim published "
       << (log.facts.verdicts_announced ? std::to_string(*log.facts.verdicts_announced) : "?") << '\n';
   if (log.facts.realtime) out << format_real_time(log);
-  if (check) out << format_check(log, *check) << violations_expected.str() << draw_plots(log, *check, (dir / "plots").string()) << '\n';
+  PagePlots plots{{}, "the log has no scenario (HIL_SCENARIO): nothing names the axes and limits"};
+  if (check) plots.note = draw_plots(log, *check, (dir / "plots").string(), &plots.images);
+  if (check) out << format_check(log, *check) << violations_expected.str() << plots.note << '\n';
   else out << "offline check: the log has no scenario (HIL_SCENARIO)\n";
   result.report = out.str();
   std::ofstream(dir / "report.txt") << result.report;
+  write_run_page(scenario, result, verdict, log, check ? &*check : nullptr, plots);
   if (figures) *figures = figures_of(variant, result.passed, log, check ? &*check : nullptr);
   return result;
 }
@@ -315,6 +320,8 @@ RunResult run_variants(const ScenarioSet& set, const std::string& run_dir, const
   const std::string checks = check_comparisons(figures, set.comparisons, comparisons_hold);
   result.passed = result.passed && comparisons_hold;
   if (result.first_failure.empty() && !comparisons_hold) result.first_failure = "a comparison of the variants fails";
+  PagePlots plots;
+  plots.note = draw_comparison_plots(set.name, figures, set.comparisons, run_dir, &plots.images);
   std::ostringstream out;
   out << "scenario " << set.name << " (" << set.variants.size() << " variants): " << (result.passed ? "PASSED" : "FAILED")
       << '\n';
@@ -323,10 +330,11 @@ RunResult run_variants(const ScenarioSet& set, const std::string& run_dir, const
   if (!comparisons_hold) out << "  because a comparison of the variants fails\n";
   out << "run folder: " << run_dir << " (a folder per variant)\n\n" << runs.str() << "=== the variants side by side ===\n"
       << format_variants(figures) << checks
-      << draw_comparison_plots(set.name, figures, set.comparisons, run_dir) << '\n'
+      << plots.note << '\n'
       << "scenario " << set.name << ": " << (result.passed ? "PASSED" : "FAILED") << '\n';
   result.report = out.str();
   std::ofstream(fs::path(run_dir) / "report.txt") << result.report;
+  write_set_page(set, result, figures, checks, plots);
   return result;
 }
 

@@ -16,21 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Counts {
-  size_t passed = 0, failed = 0, errors = 0, skipped = 0;
-};
-
-Counts count(const SuiteResult& suite) {
-  Counts c;
-  for (const RunSummary& r : suite.runs) {
-    c.passed += r.outcome == Outcome::passed;
-    c.failed += r.outcome == Outcome::failed;
-    c.errors += r.outcome == Outcome::error;
-    c.skipped += r.outcome == Outcome::skipped;
-  }
-  return c;
-}
-
 std::string fixed(double value, int digits) {
   std::ostringstream o;
   o << std::fixed << std::setprecision(digits) << value;
@@ -73,22 +58,15 @@ std::string host_name() {
 
 }  // namespace
 
-std::string escape_markup(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') out += "\xEF\xBF\xBD";
-        else out += c;
-    }
+Counts count(const SuiteResult& suite) {
+  Counts c;
+  for (const RunSummary& r : suite.runs) {
+    c.passed += r.outcome == Outcome::passed;
+    c.failed += r.outcome == Outcome::failed;
+    c.errors += r.outcome == Outcome::error;
+    c.skipped += r.outcome == Outcome::skipped;
   }
-  return out;
+  return c;
 }
 
 std::string format_summary_table(const SuiteResult& suite) {

@@ -4,9 +4,15 @@
 // test reporters read it) and JSON.
 #include <string>
 
+#include "html.hpp"
 #include "suite_run.hpp"
 
 namespace hil::rig {
+
+struct Counts {
+  size_t passed = 0, failed = 0, errors = 0, skipped = 0;
+};
+Counts count(const SuiteResult& suite);
 
 // scenario, verdict, simulated time, x real time, first failure; then the counts.
 std::string format_summary_table(const SuiteResult& suite);
@@ -17,9 +23,5 @@ std::string format_summary_table(const SuiteResult& suite);
 void write_junit(const SuiteResult& suite, const std::string& suite_name, const std::string& path);
 
 void write_json(const SuiteResult& suite, const std::string& suite_name, const std::string& path);
-
-// Text for XML/HTML: & < > " ' as entities; control characters XML 1.0
-// does not allow (all but tab, LF, CR) become U+FFFD.
-std::string escape_markup(const std::string& text);
 
 }  // namespace hil::rig

@@ -214,7 +214,8 @@ std::string format_variants(const std::vector<VariantFigures>& variants) {
 }
 
 std::string draw_comparison_plots(const std::string& scenario_name, const std::vector<VariantFigures>& variants,
-                                  const std::vector<VariantComparison>& comparisons, const std::string& dir) {
+                                  const std::vector<VariantComparison>& comparisons, const std::string& dir,
+                                  std::vector<std::string>* drawn) {
   std::vector<std::string> axes;
   bool all_axes = comparisons.empty();
   for (const VariantComparison& c : comparisons) {
@@ -275,6 +276,8 @@ std::string draw_comparison_plots(const std::string& scenario_name, const std::v
   const int code = status ? *status : gnuplot.stop();
   if (code == 127) return "comparison plot: gnuplot not found; data and script in " + dir;
   if (code != 0) return "comparison plot: gnuplot failed (" + (folder / "compare_gnuplot.out").string() + ")";
+  for (const std::string& axis : axes)
+    if (drawn) drawn->push_back((folder / ("compare_" + axis + ".png")).string());
   return "comparison plot: " + dir + "/ (" + images + ")";
 }
 

@@ -41,8 +41,9 @@ std::string format_variants(const std::vector<VariantFigures>& variants);
 
 // compare_<axis>.png in `dir`: the axis over time and over dist_prog_start,
 // one curve per variant; the axes named by `comparisons`, or all without any.
-// Returns the report's line.
+// Returns the report's line; `drawn` (if given) gets the PNGs gnuplot drew.
 std::string draw_comparison_plots(const std::string& scenario_name, const std::vector<VariantFigures>& variants,
-                                  const std::vector<VariantComparison>& comparisons, const std::string& dir);
+                                  const std::vector<VariantComparison>& comparisons, const std::string& dir,
+                                  std::vector<std::string>* drawn = nullptr);
 
 }  // namespace hil::rig

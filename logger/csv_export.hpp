@@ -1,0 +1,39 @@
+#pragma once
+// A run's log as CSV files for pandas, PlotJuggler, spreadsheets (RIG-4,
+// docs/EXPORT.md): one file per LCM channel, one row per message, the
+// nested structs flattened ("insert_cmd.state_r.state"), arrays one column
+// per element ("axis_position_r[0]_m"), numbers in SI units with the unit in
+// the column's name. Which columns a type has, and in which units, is known
+// here and nowhere else.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hil::logger {
+
+struct CsvChannel {
+  std::string channel, type;  // "AXIS_X_CMD", "axis_setpoint_t"
+  std::string file;           // the CSV file written
+  bool simulated_time = false;  // first column t_s = cycle * cycle time; else log_t_s only
+  int64_t rows = 0;
+  int64_t skipped = 0;        // messages on it not decodable as its type
+};
+
+struct CsvExport {
+  std::vector<CsvChannel> channels;  // in the order of their first message
+  // Channels none of whose messages is a type this build knows: not exported.
+  std::vector<std::pair<std::string, int64_t>> unknown;  // channel, messages
+  std::optional<double> cycle_s;     // from the first HIL_MANIFEST; none: no t_s column anywhere
+  int64_t messages = 0;
+};
+
+// Writes <dir>/<channel>.csv for every channel of `log_path` whose type is
+// known. Throws std::runtime_error if the file cannot be read or is not an
+// LCM event log (no event in it).
+CsvExport export_csv(const std::string& log_path, const std::string& dir);
+
+// A text as an RFC 4180 field: always quoted, quotes doubled.
+std::string csv_quoted(const std::string& text);
+
+}  // namespace hil::logger
