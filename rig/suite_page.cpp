@@ -14,22 +14,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string fixed(double value, int digits) {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << value;
-  return o.str();
-}
-
 }  // namespace
 
 void write_suite_page(const SuiteResult& suite, const std::string& suite_name) {
-  const Counts c = count(suite);
   const std::string verdict = suite.passed() ? "PASSED" : "FAILED";
   std::ostringstream b;
   b << "<h1>" << escape_markup(suite_name) << "</h1>\n<p><span class=\"verdict " << verdict << "\">" << verdict
-    << "</span></p>\n<p>" << suite.runs.size() << " scenario(s): " << c.passed << " passed, " << c.failed
-    << " failed, " << c.errors << " error(s), " << c.skipped << " skipped in " << format_elapsed(suite.wall_s) << " ("
-    << fixed(suite.wall_s, 1) << " s wall); <a href=\"summary.txt\">summary.txt</a></p>\n"
+    << "</span></p>\n<p>" << describe_counts(suite) << "; <a href=\"summary.txt\">summary.txt</a></p>\n"
     << "<table>\n<tr><th>scenario</th><th>verdict</th><th>simulated</th><th>x real</th><th>first failure</th></tr>\n";
   for (const RunSummary& r : suite.runs) {
     const bool ran = r.outcome == Outcome::passed || r.outcome == Outcome::failed;
@@ -41,8 +32,8 @@ void write_suite_page(const SuiteResult& suite, const std::string& suite_name) {
              "</a>";
     const std::string v = outcome_name(r.outcome);
     b << "<tr><td>" << name << "</td><td class=\"" << v << "\">" << v << "</td><td class=\"num\">"
-      << (ran ? fixed(r.simulated_s, 2) + " s" : "-") << "</td><td class=\"num\">"
-      << (ran ? fixed(r.real_time_factor(), 1) : "-") << "</td><td>" << escape_markup(r.first_failure)
+      << (ran ? format_fixed(r.simulated_s, 2) + " s" : "-") << "</td><td class=\"num\">"
+      << (ran ? format_fixed(r.real_time_factor(), 1) : "-") << "</td><td>" << escape_markup(r.first_failure)
       << "</td></tr>\n";
   }
   b << "</table>\n";

@@ -16,12 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string fixed(double value, int digits) {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << value;
-  return o.str();
-}
-
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream all;
@@ -69,6 +63,20 @@ Counts count(const SuiteResult& suite) {
   return c;
 }
 
+std::string format_fixed(double value, int digits) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(digits) << value;
+  return o.str();
+}
+
+std::string describe_counts(const SuiteResult& suite) {
+  const Counts c = count(suite);
+  return std::to_string(suite.runs.size()) + " scenario(s): " + std::to_string(c.passed) + " passed, " +
+         std::to_string(c.failed) + " failed, " + std::to_string(c.errors) + " error(s), " +
+         std::to_string(c.skipped) + " skipped in " + format_elapsed(suite.wall_s) + " (" +
+         format_fixed(suite.wall_s, 1) + " s wall)";
+}
+
 std::string format_summary_table(const SuiteResult& suite) {
   size_t width = std::string("scenario").size();
   for (const RunSummary& r : suite.runs) width = std::max(width, r.scenario_file.size());
@@ -79,13 +87,10 @@ std::string format_summary_table(const SuiteResult& suite) {
     std::string failure = r.first_failure;
     if (failure.size() > 100) failure = failure.substr(0, 97) + "...";
     out << std::left << std::setw(static_cast<int>(width)) << r.scenario_file << "  " << std::setw(7)
-        << outcome_name(r.outcome) << "  " << std::right << std::setw(8) << (ran ? fixed(r.simulated_s, 2) + " s" : "-")
-        << "  " << std::setw(6) << (ran ? fixed(r.real_time_factor(), 1) : "-") << "  " << failure << '\n';
+        << outcome_name(r.outcome) << "  " << std::right << std::setw(8) << (ran ? format_fixed(r.simulated_s, 2) + " s" : "-")
+        << "  " << std::setw(6) << (ran ? format_fixed(r.real_time_factor(), 1) : "-") << "  " << failure << '\n';
   }
-  const Counts c = count(suite);
-  out << suite.runs.size() << " scenario(s): " << c.passed << " passed, " << c.failed << " failed, " << c.errors
-      << " error(s), " << c.skipped << " skipped in " << format_elapsed(suite.wall_s) << " ("
-      << fixed(suite.wall_s, 1) << " s wall); run folders below " << suite.out_dir << '\n'
+  out << describe_counts(suite) << "; run folders below " << suite.out_dir << '\n'
       << "suite: " << (suite.passed() ? "PASSED" : "FAILED") << '\n';
   return out.str();
 }
@@ -95,10 +100,10 @@ void write_junit(const SuiteResult& suite, const std::string& suite_name, const 
   std::ostringstream x;
   x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
     << "<testsuites name=\"hil\" tests=\"" << suite.runs.size() << "\" failures=\"" << c.failed << "\" errors=\""
-    << c.errors << "\" skipped=\"" << c.skipped << "\" time=\"" << fixed(suite.wall_s, 3) << "\">\n"
+    << c.errors << "\" skipped=\"" << c.skipped << "\" time=\"" << format_fixed(suite.wall_s, 3) << "\">\n"
     << "  <testsuite name=\"" << escape_markup(suite_name) << "\" tests=\"" << suite.runs.size() << "\" failures=\""
     << c.failed << "\" errors=\"" << c.errors << "\" skipped=\"" << c.skipped << "\" time=\""
-    << fixed(suite.wall_s, 3) << "\" timestamp=\"" << iso_time_now() << "\" hostname=\"" << escape_markup(host_name())
+    << format_fixed(suite.wall_s, 3) << "\" timestamp=\"" << iso_time_now() << "\" hostname=\"" << escape_markup(host_name())
     << "\">\n";
   for (const RunSummary& r : suite.runs) {
     const fs::path file(r.scenario_file);
@@ -106,7 +111,7 @@ void write_junit(const SuiteResult& suite, const std::string& suite_name, const 
     std::replace(classname.begin(), classname.end(), '/', '.');
     x << "    <testcase classname=\"" << escape_markup(classname.empty() ? "scenarios" : classname) << "\" name=\""
       << escape_markup(file.stem().string()) << "\" file=\"" << escape_markup(r.scenario_file) << "\" time=\""
-      << fixed(r.wall_s, 3) << "\">\n";
+      << format_fixed(r.wall_s, 3) << "\">\n";
     const std::string report = r.run_dir.empty() ? "" : read_file((fs::path(r.run_dir) / "report.txt").string());
     if (r.outcome == Outcome::failed)
       x << "      <failure type=\"FAILED\" message=\"" << escape_markup(r.first_failure) << "\">"
@@ -129,7 +134,7 @@ void write_json(const SuiteResult& suite, const std::string& suite_name, const s
   j << "{\n  \"suite\": " << json_string(suite_name) << ",\n  \"passed\": " << (suite.passed() ? "true" : "false")
     << ",\n  \"counts\": {\"scenarios\": " << suite.runs.size() << ", \"passed\": " << c.passed
     << ", \"failed\": " << c.failed << ", \"errors\": " << c.errors << ", \"skipped\": " << c.skipped
-    << "},\n  \"wall_s\": " << fixed(suite.wall_s, 3) << ",\n  \"out_dir\": " << json_string(suite.out_dir)
+    << "},\n  \"wall_s\": " << format_fixed(suite.wall_s, 3) << ",\n  \"out_dir\": " << json_string(suite.out_dir)
     << ",\n  \"runs\": [";
   for (size_t i = 0; i < suite.runs.size(); ++i) {
     const RunSummary& r = suite.runs[i];
@@ -137,8 +142,8 @@ void write_json(const SuiteResult& suite, const std::string& suite_name, const s
       << ", \"name\": " << json_string(r.name) << ", \"verdict\": " << json_string(outcome_name(r.outcome))
       << ", \"requirements\": [";
     for (size_t k = 0; k < r.requirements.size(); ++k) j << (k ? ", " : "") << json_string(r.requirements[k]);
-    j << "], \"simulated_s\": " << fixed(r.simulated_s, 6) << ", \"wall_s\": " << fixed(r.wall_s, 3)
-      << ", \"x_real_time\": " << fixed(r.real_time_factor(), 2)
+    j << "], \"simulated_s\": " << format_fixed(r.simulated_s, 6) << ", \"wall_s\": " << format_fixed(r.wall_s, 3)
+      << ", \"x_real_time\": " << format_fixed(r.real_time_factor(), 2)
       << ", \"first_failure\": " << json_string(r.first_failure) << ", \"run_dir\": " << json_string(r.run_dir)
       << "}";
   }

@@ -14,6 +14,12 @@ struct Counts {
 };
 Counts count(const SuiteResult& suite);
 
+// "4 scenario(s): 2 passed, 1 failed, 1 error(s), 0 skipped in 0:01 (1.6 s wall)"
+std::string describe_counts(const SuiteResult& suite);
+
+// `value` with `digits` decimals, as the table, the page and the result files write numbers.
+std::string format_fixed(double value, int digits);
+
 // scenario, verdict, simulated time, x real time, first failure; then the counts.
 std::string format_summary_table(const SuiteResult& suite);
 
