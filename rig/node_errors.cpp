@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace hil::rig {
 namespace {
@@ -44,20 +43,30 @@ std::string node_output_file(const std::string& run_dir, const std::string& node
   return (fs::path(run_dir) / (file + ".out")).string();
 }
 
-std::string describe_node_errors(const std::vector<logger::ProcessExit>& exits, const std::string& run_dir,
-                                 bool in_process) {
-  std::ostringstream out;
-  bool no_route = false;
+NodeErrors find_node_errors(const std::vector<logger::ProcessExit>& exits, const std::string& run_dir,
+                            bool in_process) {
+  NodeErrors errors;
   for (const logger::ProcessExit& e : exits) {
     if (e.status && *e.status == 0) continue;
     const NodeOutput o = read_output(
         in_process ? (fs::path(run_dir) / "nodes.out").string() : node_output_file(run_dir, e.name), e.name);
-    no_route = no_route || o.no_route;
-    out << "  " << e.name << " (" << (e.status ? "exit status " + std::to_string(*e.status) : "hung")
-        << "): " << (o.last_error.empty() ? "no output" : o.last_error) << '\n';
+    if (o.no_route) errors.hint = multicast_hint;
+    errors.nodes.push_back(e.name + " (" + (e.status ? "exit status " + std::to_string(*e.status) : "hung") +
+                           "): " + (o.last_error.empty() ? "no output" : o.last_error));
   }
-  if (out.str().empty()) return "";
-  return "node errors:\n" + out.str() + (no_route ? std::string("  ") + multicast_hint + '\n' : "");
+  return errors;
+}
+
+std::string NodeErrors::text() const {
+  if (nodes.empty()) return "";
+  std::string out = "node errors:\n";
+  for (const std::string& line : nodes) out += "  " + line + '\n';
+  return hint.empty() ? out : out + "  " + hint + '\n';
+}
+
+std::string NodeErrors::first() const {
+  if (nodes.empty()) return "";
+  return nodes.front() + (hint.empty() ? "" : "; " + hint);
 }
 
 }  // namespace hil::rig

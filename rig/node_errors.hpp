@@ -13,10 +13,18 @@ namespace hil::rig {
 // The output file of a node of a run folder: cnc.out, axis_sim_X.out, ...
 std::string node_output_file(const std::string& run_dir, const std::string& node_name);
 
-// One line per node that did not exit 0: its name, status and last error
-// line (from `output_file(name)`), and once, if any output shows LCM's "No
-// route", how to give the machine a multicast route. "" if every node ended well.
-std::string describe_node_errors(const std::vector<logger::ProcessExit>& exits,
-                                 const std::string& run_dir, bool in_process);
+struct NodeErrors {
+  std::vector<std::string> nodes;  // "cnc (exit status 1): cannot open LCM on udpm://..." per node that failed
+  std::string hint;                // how to give the machine a multicast route, if LCM said "No route"
+  // "node errors:" and a line each, the hint last; "" if every node ended well.
+  std::string text() const;
+  // The first node's line and the hint, for a summary's one line.
+  std::string first() const;
+};
+
+// Every node that did not exit 0: its name, status and last error line
+// (from its output file in the run folder, or nodes.out in-process).
+NodeErrors find_node_errors(const std::vector<logger::ProcessExit>& exits, const std::string& run_dir,
+                            bool in_process);
 
 }  // namespace hil::rig

@@ -211,7 +211,7 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
   std::vector<logger::ProcessExit> unplanned;
   for (const logger::ProcessExit& e : exits)
     if (!(e.status == 128 + 9 && scenario.faults.kill_cycle(e.name))) unplanned.push_back(e);
-  const std::string node_errors = describe_node_errors(unplanned, dir.string(), options.in_process);
+  const NodeErrors node_errors = find_node_errors(unplanned, dir.string(), options.in_process);
 
   std::optional<logger::CheckReport> check;
   logger::RunLog log;
@@ -223,10 +223,13 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
     std::ostringstream out;
     out << "scenario " << scenario.name << ": FAILED\n";
     for (const std::string& reason : verdict.reasons) out << "  because " << reason << '\n';
-    out << node_errors << "run folder: " << result.run_dir << '\n' << where << ", run id " << run_id << '\n'
+    out << node_errors.text() << "run folder: " << result.run_dir << '\n' << where << ", run id " << run_id << '\n'
         << "exit status: " << processes.str() << '\n';
     result.report = out.str();
-    result.first_failure = verdict.reasons.empty() ? e.what() : verdict.reasons.front();
+    result.recorded = false;
+    result.first_failure = !node_errors.nodes.empty() ? node_errors.first()
+                           : verdict.reasons.empty()  ? e.what()
+                                                      : verdict.reasons.front();
     std::ofstream(dir / "report.txt") << result.report;
     write_run_page(scenario, result, verdict, log, nullptr, {{}, "the run left no log"});
     if (figures) *figures = figures_of(variant, false, log, nullptr);
@@ -268,7 +271,7 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
   }
   out << ": " << (result.passed ? "PASSED" : "FAILED") << '\n';
   for (const std::string& reason : verdict.reasons) out << "  because " << reason << '\n';
-  out << node_errors;
+  out << node_errors.text();
   const std::vector<std::string> problems = logger::log_problems(log.facts);
   out << "run folder: " << result.run_dir << '\n'
       << where << ", run id " << run_id << '\n'
@@ -309,6 +312,7 @@ RunResult run_variants(const ScenarioSet& set, const std::string& run_dir, const
     figures.emplace_back();
     const RunResult one = run_one(v.scenario, (fs::path(run_dir) / v.name).string(), options, v.name, &figures.back());
     result.passed = result.passed && one.passed;
+    result.recorded = result.recorded && one.recorded;
     result.simulated_s += one.simulated_s;
     result.wall_s += one.wall_s;
     if (result.first_failure.empty() && !one.first_failure.empty())
@@ -343,7 +347,7 @@ RunSummary summary_of(const std::string& scenario_file, const ScenarioSet& set, 
   s.scenario_file = scenario_file;
   s.name = set.name;
   s.requirements = set.variants.front().scenario.requirements;
-  s.outcome = result.passed ? Outcome::passed : Outcome::failed;
+  s.outcome = result.passed ? Outcome::passed : result.recorded ? Outcome::failed : Outcome::error;
   s.simulated_s = result.simulated_s;
   s.wall_s = result.wall_s;
   s.first_failure = result.first_failure;

@@ -25,6 +25,7 @@ struct RunResult {
   double simulated_s = 0;     // of every variant
   double wall_s = 0;          // the runs', without loading and checking
   std::string first_failure;  // the first failed expectation, else the first reason ("" if passed)
+  bool recorded = true;       // false: no log (a node could not start), an ERROR in a suite
 };
 
 // Throws ConfigError for a scenario that cannot run. Leaves report.txt and

@@ -73,6 +73,11 @@ expect_output "cnc (exit status"
 expect_output "cannot open LCM"
 expect_output "multicast route"
 grep -q "multicast route" noroute/report.txt || fail "no report.txt with the node errors"
+# In a suite such a run is an ERROR, its first failure the node's error and the hint.
+expect_status 1 unshare -n sh -c "ip link set lo up && exec \"$bin/hil\" run suite/a_short_move.yaml --shard 1/1 --out noroute_suite --json noroute.json"
+python3 -c "
+import json; r = json.load(open('noroute.json'))['runs'][0]
+assert r['verdict'] == 'ERROR' and 'cannot open LCM' in r['first_failure'] and 'multicast route' in r['first_failure'], r"
 
 # CLI errors exit 2 with CLI11's message; --version names the git commit.
 expect_status 2 "$bin/hil" run
