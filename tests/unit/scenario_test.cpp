@@ -4,22 +4,14 @@
 
 #include "config_error.hpp"
 #include "scenario.hpp"
+#include "scenario_fixture.hpp"
 #include "scenario_engine.hpp"
 
 using namespace hil;
 
 namespace {
 
-const std::string machine_yaml = R"(
-machine:
-  cycle_time_us: 1000
-  axes:
-    - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002}
-)";
-
-Scenario scenario(const std::string& rest) {
-  return parse_scenario(YAML::Load(machine_yaml + "nc_program: \"G01 X1 F100\\n\"\n" + rest));
-}
+Scenario scenario(const std::string& rest) { return test::one_axis_scenario(rest); }
 
 HliState state(int64_t cycle, ChannelState cs = ChannelState::ready, int64_t block = 0) {
   HliState s;
