@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <hil/axis_setpoint_t.hpp>
+#include <hil/hli_control_t.hpp>
 #include <hil/event_t.hpp>
 #include <hil/hli_state_t.hpp>
 #include <hil/run_manifest_t.hpp>
@@ -18,6 +19,7 @@
 #include <sstream>
 
 #include "csv_export.hpp"
+#include "hli_names.hpp"
 
 using namespace hil;
 namespace fs = std::filesystem;
@@ -215,4 +217,42 @@ TEST_CASE("RIG-4 export: every channel a CSV file, SI units, RFC 4180 strings, u
 TEST_CASE("RIG-4 export: RFC 4180 quoting", "[export]") {
   CHECK(logger::csv_quoted("plain") == "\"plain\"");
   CHECK(logger::csv_quoted("say \"hi\", then\r\nleave") == "\"say \"\"hi\"\", then\r\nleave\"");
+}
+
+// The HLI columns are written field by field (with their units), the HLI
+// table (common/hli_table.hpp) lists the fields: a field added to the table
+// must not go missing from the export unnoticed.
+TEST_CASE("RIG-4 export: every field of the HLI table has its column", "[export]") {
+  const fs::path dir = fs::temp_directory_path() / ("hil_csv_table_test_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string log_path = (dir / "run.lcmlog").string();
+  {
+    lcm::LogFile log(log_path, "w");
+    hil::hli_state_t state{};
+    state.n_axes = 1;
+    state.axis_name = {"X"};
+    state.axis_position_r = {0};
+    state.lift_active = {false};
+    state.lift_suppressed = {false};
+    write_bytes(log, "HLI_STATE", encoded(state), 1'000'000);
+    write_bytes(log, "HLI_CONTROL", encoded(hil::hli_control_t{}), 1'000'100);
+  }
+  const logger::CsvExport result = logger::export_csv(log_path, (dir / "csv").string());
+  auto has_column = [](const std::vector<std::string>& header, const std::string& field) {
+    for (const std::string& column : header)  // the name, or the name and its unit
+      if (column == field || column.rfind(field + "_", 0) == 0) return true;
+    return false;
+  };
+  const auto state_header = read_csv((dir / "csv" / "HLI_STATE.csv").string()).at(0);
+  for (const HliField<HliState>& f : hli_fields<HliState>()) {
+    INFO(f.name);
+    CHECK(has_column(state_header, f.name));
+  }
+  const auto control_header = read_csv((dir / "csv" / "HLI_CONTROL.csv").string()).at(0);
+  for (const HliField<HliControl>& f : hli_fields<HliControl>()) {
+    INFO(f.name);
+    CHECK(has_column(control_header, f.name));
+  }
+  fs::remove_all(dir);
 }
