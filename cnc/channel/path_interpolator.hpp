@@ -6,7 +6,6 @@
 // turn, stop at a path position, the velocity factor of the path's hold.
 #include <cmath>
 #include <cstddef>
-#include <deque>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -18,6 +17,7 @@
 #include "look_ahead.hpp"
 #include "machine_config.hpp"
 #include "motion_profile.hpp"
+#include "ring_queue.hpp"
 
 namespace hil::cnc {
 
@@ -276,7 +276,7 @@ class PathInterpolator {
   double stop_covered_from_ = 0;
   std::optional<PlacedStop> placed_stop_;
   double pushed_covered_ = 0;
-  std::deque<PushedMotion> pushed_;  // from the front's on
+  RingQueue<PushedMotion> pushed_;  // from the front's on
   // The front's finished pieces' dist_prog_start share (KRN-6: a motion is
   // several pieces).
   double front_done_ = 0;

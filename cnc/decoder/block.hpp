@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "axis_values.hpp"
 #include "slope.hpp"
 
 namespace hil::cnc {
@@ -15,8 +16,8 @@ enum class MotionType { rapid, linear, arc_cw, arc_ccw };  // G00 G01 G02 G03
 
 struct Motion {
   MotionType type = MotionType::linear;
-  std::vector<double> start;  // mm, per machine axis
-  std::vector<double> end;    // mm, per machine axis
+  AxisValues start;  // mm, per machine axis
+  AxisValues end;    // mm, per machine axis
   double center_x = 0;        // mm, absolute arc centre (G02/G03, XY plane)
   double center_y = 0;
   double feed = 0;            // mm/s (programmed F is mm/min), the F in force; G00 moves at rapid

@@ -143,7 +143,7 @@ void decode_run(const BlockWords& programmed, DecoderState& state, Block& block)
   if (programmed.i || programmed.j) throw LineError{"I/J are only allowed with G02/G03"};
   block.not_searchable = name;
   const bool homing = *programmed.run == 74;
-  std::vector<double> target = state.position;
+  AxisValues target = state.position;
   if (homing) {
     bool named = false;
     for (size_t a = 0; a < programmed.axes.size(); ++a) {
@@ -175,7 +175,7 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
   if (programmed.run) return decode_run(programmed, state, block);
   ModalState& modal = state.modal;
   if (programmed.motion) modal.motion = *programmed.motion;
-  std::vector<double> target = programmed_target(programmed.axes, state);
+  AxisValues target = programmed_target(programmed.axes, state);
   check_position(target, state.machine, "end point");  // after G91, G92 and #CS: each word may be in range, the sum not
   const bool is_arc = modal.motion == MotionType::arc_cw || modal.motion == MotionType::arc_ccw;
   const bool has_centre = programmed.i || programmed.j;

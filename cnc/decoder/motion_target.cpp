@@ -51,15 +51,15 @@ void check_on_circle(const Motion& m, int x, int y) {
 
 }  // namespace
 
-std::vector<double> programmed_target(const std::vector<std::optional<double>>& axis_words,
+AxisValues programmed_target(const std::vector<std::optional<double>>& axis_words,
                                       const DecoderState& state) {
   return programmed_target(axis_words, state, state.modal.absolute);
 }
 
-std::vector<double> programmed_target(const std::vector<std::optional<double>>& axis_words,
+AxisValues programmed_target(const std::vector<std::optional<double>>& axis_words,
                                       const DecoderState& state, bool absolute) {
-  const std::vector<double>& position = state.position;
-  std::vector<double> target = position;
+  const AxisValues& position = state.position;
+  AxisValues target = position;
   auto programmed = [&](double current, double word) { return absolute ? word : current + word; };
   for (size_t a = 0; a < axis_words.size(); ++a)
     if (axis_words[a]) target[a] = programmed(position[a], *axis_words[a]) + (absolute ? state.offset[a] : 0.0);

@@ -16,7 +16,7 @@ double checked_length(double value, std::string_view what) {
   throw LineError{msg.str()};
 }
 
-void check_position(const std::vector<double>& position, const MachineConfig& machine, std::string_view what) {
+void check_position(const AxisValues& position, const MachineConfig& machine, std::string_view what) {
   for (size_t a = 0; a < position.size(); ++a)  // the name only for the message: this runs for every block
     if (!(std::abs(position[a]) <= max_length_mm))
       checked_length(position[a], std::string(what) + " " + machine.axes[a].name);

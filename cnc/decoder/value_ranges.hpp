@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "axis_values.hpp"
 #include "machine_config.hpp"
 
 namespace hil::cnc::decoding {
@@ -31,7 +32,7 @@ double checked_length(double value, std::string_view what);
 
 // Every axis of `position` (machine axis order) within max_length_mm;
 // `what` names the point ("end point", "arc centre").
-void check_position(const std::vector<double>& position, const MachineConfig& machine, std::string_view what);
+void check_position(const AxisValues& position, const MachineConfig& machine, std::string_view what);
 
 // The number the decimal digits `digits` write if it is at most `max`;
 // none for an empty text, any other character or a larger number.

@@ -6,6 +6,7 @@
 // it at the cycle time is exact.
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <new>
 #include <stdexcept>
 #include <type_traits>
@@ -80,8 +81,8 @@ class InlineList {
   InlineList(const InlineList& other) { *this = other; }
   InlineList& operator=(const InlineList& other) {
     if (this == &other) return *this;
-    size_ = 0;
-    for (const T& x : other) push_back(x);
+    size_ = other.size_;
+    std::memcpy(storage_, other.storage_, size_ * sizeof(T));  // trivially copyable: one copy, not size_ pushes
     return *this;
   }
   // Throws std::length_error beyond capacity (no planner gets there).

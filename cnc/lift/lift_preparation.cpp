@@ -8,7 +8,7 @@ void LiftPreparation::prepare_held() {
   if (has_range_) {
     // A part that is not the program's first begins with a motion block
     // outside any range: where it starts does not matter.
-    const std::vector<double> start = first_part_ ? start_ : held_.front().motion.start;
+    const std::vector<double> start = first_part_ ? start_ : std::vector<double>(held_.front().motion.start);
     for (LiftRange range : prepare_lift_ranges(held_, machine_, start)) {
       range.start += held_first_;
       range.end += held_first_;
@@ -16,7 +16,7 @@ void LiftPreparation::prepare_held() {
     }
   }
   held_first_ += held_.size();
-  ready_.insert(ready_.end(), std::make_move_iterator(held_.begin()), std::make_move_iterator(held_.end()));
+  for (Block& b : held_) ready_.push_back(std::move(b));
   held_.clear();
   first_part_ = false;
   has_range_ = false;

@@ -6,13 +6,13 @@
 // are held until the range has ended and the next motion block after it
 // has come: memory grows with the longest lift range, not the program.
 #include <cstddef>
-#include <deque>
 #include <functional>
 #include <vector>
 
 #include "block_source.hpp"
 #include "lift_ranges.hpp"
 #include "machine_config.hpp"
+#include "ring_queue.hpp"
 
 namespace hil::cnc {
 
@@ -39,7 +39,7 @@ class LiftPreparation : public BlockSource {
   bool first_part_ = true;
   bool open_ = false;  // a range has begun and not ended
   bool has_range_ = false;  // held_ has a LIFT_START
-  std::deque<Block> ready_;
+  RingQueue<Block> ready_;
   bool ended_ = false;
 };
 

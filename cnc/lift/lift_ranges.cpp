@@ -68,36 +68,39 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
   if (machine.lift_method == LiftMethod::none) return ranges;
   // Where the ranges lie, and where the lift axis stands at each start.
   std::vector<double> position = start_position;
-  std::optional<LiftRange> open;
+  // Not std::optional: g++ 12 then warns of a vector in it read uninitialised.
+  LiftRange open;
+  bool is_open = false;
   auto close = [&](size_t k) {
-    open->end = k;
-    open->end_has_motion = blocks[k].has_motion;
-    position[static_cast<size_t>(open->command.axis)] = open->command.pos;  // where the next part starts
-    ranges.push_back(*open);
-    open.reset();
+    open.end = k;
+    open.end_has_motion = blocks[k].has_motion;
+    position[static_cast<size_t>(open.command.axis)] = open.command.pos;  // where the next part starts
+    ranges.push_back(open);
+    is_open = false;
   };
   for (size_t k = 0; k < blocks.size(); ++k) {
     const Block& block = blocks[k];
     if (block.lift_start) {
-      const bool flush = open.has_value();  // #FLUSH: LIFT_END and LIFT_START here (LIFT-5)
+      const bool flush = is_open;  // #FLUSH: LIFT_END and LIFT_START here (LIFT-5)
       if (flush) close(k);
       open = LiftRange{};
-      open->start = k;
-      open->command = *block.lift_start;
-      open->z0 = position[static_cast<size_t>(block.lift_start->axis)];
+      is_open = true;
+      open.start = k;
+      open.command = *block.lift_start;
+      open.z0 = position[static_cast<size_t>(block.lift_start->axis)];
       if (block.lift_end && !flush) {  // the single-block Z[LIFT ..]
         if (block.has_motion) position = block.motion.end;
         close(k);
         continue;
       }
-    } else if (block.lift_end && open) {
+    } else if (block.lift_end && is_open) {
       if (block.has_motion) position = block.motion.end;
       close(k);
       continue;
     }
     if (block.has_motion) position = block.motion.end;
   }
-  if (open) close(blocks.size() - 1);  // program end without LIFT_END (LIFT-5)
+  if (is_open) close(blocks.size() - 1);  // program end without LIFT_END (LIFT-5)
 
   const double override_max = machine.override_max_percent / 100.0;
   for (LiftRange& range : ranges) {

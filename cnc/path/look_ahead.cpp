@@ -59,15 +59,14 @@ void LookAhead::clear() {
   programmed_ = 0;
 }
 
-void LookAhead::push_piece(PathPiece piece) {
+void LookAhead::push_piece(PathPiece&& piece) {
   double jerk_share = 1;
   if (!blocks_.empty()) {
     const Junction j = junction(blocks_.back().segment, piece.segment, machine_);
     blocks_.back().junction_limit = piece.stop_before ? 0.0 : j.v_max;
     if (j.curvature_step) blocks_.back().jerk_share = jerk_share = curvature_step_jerk_share;
   }
-  blocks_.push_back({piece.block_index, std::move(piece.segment), piece.slope, 0.0, jerk_share, 0.0, true,
-                     piece.begins_block, piece.ends_block});
+  blocks_.emplace_back(std::move(piece), jerk_share);
   backward_pass(blocks_.size() - 1, true);
 }
 

@@ -5,17 +5,26 @@
 // known block can still be kept, under the programmed velocities scaled by
 // override and feed hold.
 #include <cstddef>
-#include <deque>
 #include <optional>
 
 #include "contour_builder.hpp"
 #include "machine_config.hpp"
 #include "path_segment.hpp"
+#include "ring_queue.hpp"
 #include "slope.hpp"
 
 namespace hil::cnc {
 
 struct LookAheadBlock {
+  // Made in its place in the look-ahead: a PathSegment is large to move.
+  LookAheadBlock(PathPiece&& piece, double jerk_share)
+      : block_index(piece.block_index),
+        segment(std::move(piece.segment)),
+        slope(piece.slope),
+        jerk_share(jerk_share),
+        begins_block(piece.begins_block),
+        ends_block(piece.ends_block) {}
+
   size_t block_index = 0;  // into the decoded program
   PathSegment segment;
   SlopeType slope = SlopeType::trapez;
@@ -102,14 +111,14 @@ class LookAhead {
   // the path still reaches the next limiting transition's v_end.
   double entry_velocity_after(size_t i) const;
 
-  void push_piece(PathPiece piece);
+  void push_piece(PathPiece&& piece);
 
   const MachineConfig& machine_;
   ContourBuilder builder_;
   size_t programmed_ = 0;  // blocks pushed and not yet popped (the last piece of each)
   size_t capacity_;
   double factor_ = 1;
-  std::deque<LookAheadBlock> blocks_;
+  RingQueue<LookAheadBlock> blocks_;
 };
 
 // The highest velocity v0 <= v_cap from which a velocity change (a = 0 at

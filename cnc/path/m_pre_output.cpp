@@ -17,7 +17,7 @@ constexpr double shortest_part_mm = 1e-5;
 // Puts `m` `distance` mm before the end of `out`'s path: between two parts
 // of the motion block there, or before the earliest block searched.
 // False if the path before it was shorter than the pre-output path.
-bool insert_pre_output(std::deque<Block>& out, const MFunction& m, const Block& owner, const MachineConfig& machine) {
+bool insert_pre_output(RingQueue<Block>& out, const MFunction& m, const Block& owner, const MachineConfig& machine) {
   double distance = m.pre_output_mm;
   bool reached = false;
   size_t insert_at = out.size();

@@ -12,7 +12,6 @@
 // last 10 motion blocks on (and the blocks without motion between them),
 // the only ones a later pre-output can still split or insert into.
 #include <cstddef>
-#include <deque>
 #include <utility>
 #include <vector>
 
@@ -20,6 +19,7 @@
 #include "block_source.hpp"
 #include "event.hpp"
 #include "machine_config.hpp"
+#include "ring_queue.hpp"
 
 namespace hil::cnc {
 
@@ -39,7 +39,7 @@ class MPreOutput : public BlockSource {
 
   BlockSource& upstream_;
   const MachineConfig& machine_;
-  std::deque<Block> held_;
+  RingQueue<Block> held_;
   size_t motion_held_ = 0;  // motion blocks in held_
   size_t final_ = 0;        // held_'s first blocks no pre-output can change any more
   bool ended_ = false;

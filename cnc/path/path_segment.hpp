@@ -40,7 +40,7 @@ class PathSegment {
   const std::shared_ptr<const ContourJoint>& joint() const { return joint_; }
   double curve_position(double s) const { return reversed_ ? s_from_ + length_ - s : s_from_ + s; }
   bool reversed() const { return reversed_; }
-  const std::vector<double>& end() const { return end_; }
+  const AxisValues& end() const { return end_; }
 
   // Axis positions at path length s; first and second derivatives by s.
   std::vector<double> position(double s) const;
@@ -58,7 +58,7 @@ class PathSegment {
   void set_contour_limits(const MachineConfig& machine, double programmed_velocity);
 
   bool arc_ = false;
-  std::vector<double> start_, end_, unit_;  // unit_: d(axis)/ds of the linear axes
+  AxisValues start_, end_, unit_;  // unit_: d(axis)/ds of the linear axes
   int ix_ = -1, iy_ = -1;                   // arc plane axes
   double cx_ = 0, cy_ = 0, radius_ = 0, radius_end_ = 0, angle0_ = 0;
   double direction_ = 1;  // +1 counter-clockwise (G03), -1 clockwise (G02)
