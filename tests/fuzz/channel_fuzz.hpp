@@ -145,7 +145,7 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options = {});
 FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options = {});
 // The same in a child process (fork), so that a crash or a hang of the
 // channel becomes a failure of this run ("crash": the signal; a hang is
-// ended by SIGALRM after timeout_s) instead of ending the caller.
+// ended by SIGPROF after timeout_s of CPU time) instead of ending the caller.
 FuzzRun run_channel_fuzz_isolated(uint64_t seed, const FuzzOptions& options = {}, unsigned timeout_s = 120);
 
 // One line: cycle, axis, quantity, value, limit, NC line and its text.

@@ -131,3 +131,21 @@ TEST_CASE("LIFT-1 LIFT-2 LIFT-3 LIFT-5 LIFT-8 channel fuzz, lift kind: both lift
   CHECK(r.short_cuts > r.runs / 20);
   CHECK(r.m_output > r.runs / 10);
 }
+
+TEST_CASE("channel fuzz: a run without an end is ended by its CPU time limit, a failure that says so", "[fuzz]") {
+  // 500 mm at 6 mm/min: 5,000 s of path, millions of cycles; 1 s of CPU
+  // time is the limit. CPU time, not wall time: a loaded machine must not
+  // fail the long seeds (the 120 s default).
+  FuzzOptions options;
+  options.random_plc = false;
+  options.insert_stops = false;
+  options.block_search = false;
+  options.program_text = "N10 G01 X500 F6\nM30\n";
+  const auto t0 = std::chrono::steady_clock::now();
+  const FuzzRun run = run_channel_fuzz_isolated(1, options, 1);
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  REQUIRE(run.failures.size() == 1);
+  CHECK(run.failures[0].invariant == "crash");
+  CHECK(run.failures[0].detail.find("no end within 1 s of CPU time") != std::string::npos);
+  CHECK(wall_s < 60);
+}
