@@ -16,11 +16,11 @@ enum class MotionType { rapid, linear, arc_cw, arc_ccw };  // G00 G01 G02 G03
 
 struct Motion {
   MotionType type = MotionType::linear;
-  AxisValues start;  // mm, per machine axis
-  AxisValues end;    // mm, per machine axis
-  double center_x = 0;        // mm, absolute arc centre (G02/G03, XY plane)
+  AxisValues start;     // mm, per machine axis
+  AxisValues end;       // mm, per machine axis
+  double center_x = 0;  // mm, absolute arc centre (G02/G03, XY plane)
   double center_y = 0;
-  double feed = 0;            // mm/s (programmed F is mm/min), the F in force; G00 moves at rapid
+  double feed = 0;      // mm/s (programmed F is mm/min), the F in force; G00 moves at rapid
   // The lift function's caps on the path in a lift range (LIFT-2, LIFT-3):
   // velocity so that the lift axis makes its target in time, and (path-based)
   // acceleration and jerk so that the coupled lift axis stays within its

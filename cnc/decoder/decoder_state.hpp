@@ -67,10 +67,10 @@ struct DecoderState {
   }
 
   const MachineConfig& machine;
-  AxisValues position;                // machine coordinates
+  AxisValues position;                 // machine coordinates
   ParameterValues parameters;          // P parameters
   std::map<int, double> pre_output_mm;  // M function pre-output (P-CHAN-00070, V.G.M_FCT[m].PRE_OUTP_PATH), mm
-  AxisValues offset;                  // G92: machine - program
+  AxisValues offset;                   // G92: machine - program
   std::optional<CoordinateSystem> cs;  // #CS ON
   ModalState modal;
   std::optional<LiftRange> lift;

@@ -52,12 +52,12 @@ void check_on_circle(const Motion& m, int x, int y) {
 }  // namespace
 
 AxisValues programmed_target(const std::vector<std::optional<double>>& axis_words,
-                                      const DecoderState& state) {
+                             const DecoderState& state) {
   return programmed_target(axis_words, state, state.modal.absolute);
 }
 
 AxisValues programmed_target(const std::vector<std::optional<double>>& axis_words,
-                                      const DecoderState& state, bool absolute) {
+                             const DecoderState& state, bool absolute) {
   const AxisValues& position = state.position;
   AxisValues target = position;
   auto programmed = [&](double current, double word) { return absolute ? word : current + word; };

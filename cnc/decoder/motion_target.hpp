@@ -12,11 +12,11 @@ namespace hil::cnc::decoding {
 
 // The end point of a block with these axis words (one per machine axis).
 AxisValues programmed_target(const std::vector<std::optional<double>>& axis_words,
-                                      const DecoderState& state);
+                             const DecoderState& state);
 // The same with G90 (`absolute`) or G91 given, not the modal one (the
 // lift function's [G90|G91], LIFT-1).
 AxisValues programmed_target(const std::vector<std::optional<double>>& axis_words,
-                                      const DecoderState& state, bool absolute);
+                             const DecoderState& state, bool absolute);
 
 // The centre of the G02/G03 motion `m` (start and end set) from I/J
 // (G161/G162, G165); throws LineError if the end is not on the circle.
