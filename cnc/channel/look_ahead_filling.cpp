@@ -87,7 +87,7 @@ void PathInterpolator::push(PushedMotion m, bool stop_before) {
       hand_over(std::move(second), true);
       return;
     } else if (s <= length + shortest_rest_mm) {  // at its end
-      const std::vector<double> end = m.motion.end;
+      const AxisValues end = m.motion.end;
       m.out = ends_at_stop;
       hand_over(std::move(m), stop_before);
       place_stop(end);

@@ -289,7 +289,7 @@ PathProgress PathInterpolator::interpolate(double t) {
     // A stop at the block end: the path stands on the end, in the block.
     if (plan_ended && stop_at_ && std::abs(travelled_before_front_ + length - *stop_at_) <= 1e-9 * (1 + *stop_at_))
       break;
-    const std::vector<double> end_point = look_ahead_.front().segment.end();
+    const AxisValues end_point = look_ahead_.front().segment.end();
     finish_front();
     if (look_ahead_.empty()) {
       // Leave the last block exactly on its programmed end point.

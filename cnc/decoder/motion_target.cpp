@@ -13,7 +13,7 @@ namespace {
 int main_axis(const DecoderState& state, int k) { return state.machine.axis_index(std::string(1, "XYZ"[k])); }
 
 // Main axes of a machine position in the active #CS, and back.
-Eigen::Vector3d to_program(const DecoderState& state, const std::vector<double>& machine) {
+Eigen::Vector3d to_program(const DecoderState& state, const AxisValues& machine) {
   Eigen::Vector3d workpiece;
   for (int k = 0; k < 3; ++k) workpiece[k] = machine[main_axis(state, k)] - state.offset[main_axis(state, k)];
   return state.cs->to_program(workpiece);
@@ -92,7 +92,7 @@ void set_arc_centre(Motion& m, std::optional<double> i, std::optional<double> j,
   const int x = state.machine.axis_index("X"), y = state.machine.axis_index("Y");
   if (x < 0 || y < 0) throw LineError{"G02/G03 need axes X and Y (plane G17)"};
   if (!i && !j) throw LineError{"G02/G03 need the centre I/J (R is not supported yet)"};
-  const std::vector<double>& offset = state.offset;
+  const AxisValues& offset = state.offset;
   if (state.cs) {
     if (!state.cs->keeps_xy_plane())
       throw LineError{"G02/G03 in a #CS rotated out of the XY plane are not supported yet"};

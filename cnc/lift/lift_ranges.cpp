@@ -67,7 +67,7 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
   std::vector<LiftRange> ranges;
   if (machine.lift_method == LiftMethod::none) return ranges;
   // Where the ranges lie, and where the lift axis stands at each start.
-  std::vector<double> position = start_position;
+  AxisValues position = start_position;
   // Not std::optional: g++ 12 then warns of a vector in it read uninitialised.
   LiftRange open;
   bool is_open = false;

@@ -52,7 +52,7 @@ Motion reversed(Motion motion) {
 
 std::optional<Motion> rest_of_motion(const Motion& motion, const std::vector<double>& point, bool backward,
                                      const MachineConfig& machine, bool at_end_if_closed) {
-  const std::vector<double>& target = backward ? motion.start : motion.end;
+  const AxisValues& target = backward ? motion.start : motion.end;
   const PathSegment whole(motion, machine);
   if (const std::optional<double> s = along(motion, whole, point, machine, at_end_if_closed)) {
     const double rest = backward ? *s : whole.length() - *s;

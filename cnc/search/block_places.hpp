@@ -28,7 +28,7 @@ class PassedBlocks {
   std::vector<double> position_at_start(const BlockWindow& blocks, size_t k) const {
     for (size_t i = k; blocks.has(i); ++i)
       if (blocks[i].has_motion) return blocks[i].motion.start;
-    return last_end_;
+    return std::vector<double>(last_end_);
   }
   // Whether the point at the start of the next block `k` (`at_start`) or
   // inside it lies in a lift range (LIFT-1): a range begins with its
@@ -41,7 +41,7 @@ class PassedBlocks {
   }
 
  private:
-  std::vector<double> last_end_;
+  AxisValues last_end_;
   bool open_range_ = false;  // a range has begun before the next block and not ended
 };
 

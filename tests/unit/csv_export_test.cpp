@@ -75,12 +75,18 @@ std::map<std::string, std::string> row(const std::vector<std::vector<std::string
 
 double num(const std::string& cell) { return std::stod(cell); }
 
+// An empty folder of this test's own (per process).
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
 }  // namespace
 
 TEST_CASE("RIG-4 export: every channel a CSV file, SI units, RFC 4180 strings, unknown types counted", "[export]") {
-  const fs::path dir = fs::temp_directory_path() / ("hil_csv_test_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("hil_csv_test");
   const std::string log_path = (dir / "run.lcmlog").string();
   {
     lcm::LogFile log(log_path, "w");
@@ -223,9 +229,7 @@ TEST_CASE("RIG-4 export: RFC 4180 quoting", "[export]") {
 // table (common/hli_table.hpp) lists the fields: a field added to the table
 // must not go missing from the export unnoticed.
 TEST_CASE("RIG-4 export: every field of the HLI table has its column", "[export]") {
-  const fs::path dir = fs::temp_directory_path() / ("hil_csv_table_test_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = fresh_dir("hil_csv_table_test");
   const std::string log_path = (dir / "run.lcmlog").string();
   {
     lcm::LogFile log(log_path, "w");
