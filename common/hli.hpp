@@ -23,8 +23,9 @@ bool parse_channel_state(const std::string& text, ChannelState& state);
 // stop conditions). The channel sets FEEDHOLD, PLC_ACKNOWLEDGE and
 // WAIT_TECHNO_ACK (an M function waits), OVERRIDE_ZERO, DELAY_TIME,
 // IPO_INPUT_EMPTY, CHANNEL_ERROR, M00_OR_M01 with M0_STOP / M1_STOP and
-// INSERT_STOP_AT_DIST (cnc/channel/path_hold.cpp). One list, X(NAME, name,
-// bit): the constants below and the names scenarios write (HLI_SC_ dropped,
+// INSERT_STOP_AT_DIST (cnc/channel/path_hold.cpp); the others (the text's
+// whole table, KRN-4) a scenario can name but this rig never sets. One
+// list, X(NAME, name, bit): the constants below and the names scenarios write (HLI_SC_ dropped,
 // stop_condition_names()) both come from it.
 #define HLI_STOP_CONDITIONS(X)                                                             \
   X(FEEDHOLD, feedhold, 0x0001)                       /* path feed stop */                   \
@@ -41,9 +42,15 @@ bool parse_channel_state(const std::string& text, ChannelState& state);
   X(WAIT_FOR_AXES, wait_for_axes, 0x8000)                                                    \
   X(CHANNEL_ERROR, channel_error, 0x00010000)                                                \
   X(WAIT_TECHNO_ACK, wait_techno_ack, 0x00020000)     /* M/H/ST function acknowledgement */  \
+  X(W_C_AFTER_COLLISION, w_c_after_collision, 0x00040000)                                    \
+  X(SLOPE_SUPPLY_PROBLEM, slope_supply_problem, 0x00080000)                                  \
+  X(BACK_INTERPOLATION, back_interpolation, 0x00100000)                                      \
+  X(STOP_REVERSIBLE, stop_reversible, 0x00200000)                                            \
+  X(BREAKPOINT_STOP, breakpoint_stop, 0x00400000)                                            \
   X(M0_STOP, m0_stop, 0x02000000)                                                            \
   X(M1_STOP, m1_stop, 0x04000000)                                                            \
-  X(INSERT_STOP_AT_DIST, insert_stop_at_dist, 0x08000000)
+  X(INSERT_STOP_AT_DIST, insert_stop_at_dist, 0x08000000)                                    \
+  X(DEC_SYN_CHAN_EMPTY, dec_syn_chan_empty, 0x10000000)
 namespace stop_condition {
 #define HIL_STOP_CONDITION_CONSTANT(NAME, name, bit) constexpr int32_t name = bit;
 HLI_STOP_CONDITIONS(HIL_STOP_CONDITION_CONSTANT)

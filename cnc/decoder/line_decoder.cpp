@@ -136,12 +136,15 @@ void preset_position(const BlockWords& programmed, DecoderState& state) {
 // points (machine file `reference_position`; the words' values, TwinCAT's
 // homing order, are not used), G100 moves linearly at F to the programmed
 // point (no probe input: the run ends there). Block search by distance
-// cannot simulate them: not_searchable.
+// cannot simulate them: not_searchable. Both need channel initialisation
+// (TF5200_delete_distance_to_go.txt 2.5, DDTG-8): the path stands still
+// before them, and a short cut's search for its end marker ends there.
 void decode_run(const BlockWords& programmed, DecoderState& state, Block& block) {
   const std::string name = "G" + std::to_string(*programmed.run);
   if (programmed.motion) throw LineError{name + " cannot be combined with G00 / G01 / G02 / G03"};
   if (programmed.i || programmed.j) throw LineError{"I/J are only allowed with G02/G03"};
   block.not_searchable = name;
+  block.short_cut_restriction = ShortCutRestriction::channel_initialisation;
   const bool homing = *programmed.run == 74;
   AxisValues target = state.position;
   if (homing) {

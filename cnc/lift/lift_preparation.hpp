@@ -1,10 +1,11 @@
 #pragma once
 // The lift's path preparation on a streamed program (issue 17, LIFT-1 ..
-// LIFT-5): prepare_lift_ranges needs a range whole, and the motion block
-// before it (no contouring into a range). Blocks pass at once while no
-// range is near; from the last motion block before a LIFT_START on, they
-// are held until the range has ended and the next motion block after it
-// has come: memory grows with the longest lift range, not the program.
+// LIFT-5): prepare_lift_ranges needs a range whole, and the motion blocks
+// before and after it (whether contouring into and out of it stays).
+// Blocks pass at once while no range is near; from the last motion block
+// before a LIFT_START on, they are held until the range has ended and the
+// next motion block after it has come: memory grows with the longest lift
+// range, not the program.
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -27,8 +28,9 @@ class LiftPreparation : public BlockSource {
   size_t blocks_held() const { return held_.size() + ready_.size(); }
 
  private:
-  // held_ is final: its ranges are planned, its blocks ready to go.
-  void prepare_held();
+  // held_ is final: its ranges are planned, its blocks ready to go;
+  // `next_motion` follows it (none at the program's end).
+  void prepare_held(const Block* next_motion);
 
   BlockSource& upstream_;
   const MachineConfig& machine_;

@@ -56,6 +56,61 @@ void plan_lifting(LiftRange& range, const AxisConfig& axis, double factor, doubl
   range.v_plan = range.length / range.profile.duration();
 }
 
+// The range's last motion block; past its end if it has none.
+size_t last_motion(const std::vector<Block>& blocks, const LiftRange& range) {
+  for (size_t k = range.end + 1; k-- > range.start;)
+    if (blocks[k].has_motion) return k;
+  return range.end + 1;
+}
+
+// TF5200 "Path smoothing and lifting": the lift axis is at rest at a
+// range's start and end, so contouring (G61, G261) into or out of a range
+// stays only where the lift axis does not move in the motion block before
+// LIFT_START, or directly after LIFT_END (2nd case; Advanced Lifting only,
+// below); otherwise that transition is standard (1st case). A neighbouring
+// block in another range (#FLUSH: the lift axis reaches its target there)
+// suppresses it as well, and so does, out of a range, a POS other than the
+// height the range started at.
+void suppress_contouring_at_ends(std::vector<Block>& blocks, const std::vector<LiftRange>& ranges,
+                                 const Block* next_motion, LiftMethod method) {
+  auto in_a_range = [&](size_t k) {
+    return std::any_of(ranges.begin(), ranges.end(), [k](const LiftRange& r) { return r.contains(k); });
+  };
+  auto moves = [](const Block& block, size_t axis) { return block.motion.start[axis] != block.motion.end[axis]; };
+  auto suppress = [](Block& block) {
+    if (block.transition == BlockTransition::contour) block.transition = BlockTransition::standard;
+  };
+  // Lifting couples the lift axis to the covered distance (DPS-1), which a
+  // curve counts at another rate per length than the line it joins: the
+  // lift axis' velocity would step where the curve ends. Lifting keeps the
+  // 1st case at both ends.
+  const bool always = method == LiftMethod::path_based;
+  for (const LiftRange& range : ranges) {
+    const auto axis = static_cast<size_t>(range.command.axis);
+    for (size_t k = range.start; k-- > 0;) {
+      if (!blocks[k].has_motion) continue;
+      if (always || in_a_range(k) || moves(blocks[k], axis)) suppress(blocks[k]);
+      break;
+    }
+    const size_t last = last_motion(blocks, range);
+    if (last > range.end) continue;
+    const Block* after = next_motion;
+    bool after_in_range = false;
+    for (size_t k = range.end + 1; k < blocks.size(); ++k) {
+      if (!blocks[k].has_motion) continue;
+      after = &blocks[k];
+      after_in_range = in_a_range(k);
+      break;
+    }
+    // The range's blocks keep the lift axis at its start height; where POS
+    // lies elsewhere the path steps there at the range's end and only the
+    // lift bridges it: a curve across the step would move the lift axis.
+    const bool step = blocks[last].motion.end[axis] != range.command.pos;
+    if (always || !after || after_in_range || after->lift_start || moves(*after, axis) || step)
+      suppress(blocks[last]);
+  }
+}
+
 }  // namespace
 
 Limits advanced_lifting_limits(const AxisConfig& axis) {
@@ -63,7 +118,7 @@ Limits advanced_lifting_limits(const AxisConfig& axis) {
 }
 
 std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const MachineConfig& machine,
-                                           const std::vector<double>& start_position) {
+                                           const std::vector<double>& start_position, const Block* next_motion) {
   std::vector<LiftRange> ranges;
   if (machine.lift_method == LiftMethod::none) return ranges;
   // Where the ranges lie, and where the lift axis stands at each start.
@@ -142,11 +197,8 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
       ahead = std::max(ahead, std::min(programmed[i], v_cap));
       range.v_ahead[i] = ahead;
     }
-    // No contouring into or out of a range: the lift axis is at rest there
-    // and joins the path again (TF5200: smoothing suppressed at lift start
-    // and end); none inside a Lifting range either, whose caps hold for
+    // Lifting: no contouring inside the range either, whose caps hold for
     // the blocks' own segments.
-    std::optional<size_t> last_in_range;
     for (size_t k = range.start; k <= range.end; ++k) {
       Block& block = blocks[k];
       if (!block.has_motion) continue;
@@ -155,16 +207,9 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
       block.motion.path_v_cap = std::min(block.motion.path_v_cap, v_cap);
       block.motion.path_a_cap = std::min(block.motion.path_a_cap, a_cap);
       block.motion.path_j_cap = std::min(block.motion.path_j_cap, j_cap);
-      last_in_range = k;
-    }
-    if (last_in_range && blocks[*last_in_range].transition == BlockTransition::contour)
-      blocks[*last_in_range].transition = BlockTransition::standard;
-    for (size_t k = range.start; k-- > 0;) {
-      if (!blocks[k].has_motion) continue;
-      if (blocks[k].transition == BlockTransition::contour) blocks[k].transition = BlockTransition::standard;
-      break;
     }
   }
+  suppress_contouring_at_ends(blocks, ranges, next_motion, machine.lift_method);
   return ranges;
 }
 

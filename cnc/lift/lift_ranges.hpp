@@ -54,9 +54,12 @@ constexpr double advanced_lifting_share = 0.98;
 Limits advanced_lifting_limits(const AxisConfig& axis);
 
 // The ranges of `blocks` (positions of the axes at program start:
-// `start_position`), with their motions' path caps set and ranges without
-// path motion marked (Block::lift_positioning).
+// `start_position`), with their motions' path caps set, ranges without
+// path motion marked (Block::lift_positioning) and contouring into and out
+// of them suppressed where the text says. `next_motion`: the motion block
+// that follows `blocks`, if one does.
 std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const MachineConfig& machine,
-                                           const std::vector<double>& start_position);
+                                           const std::vector<double>& start_position,
+                                           const Block* next_motion = nullptr);
 
 }  // namespace hil::cnc

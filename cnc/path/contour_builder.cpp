@@ -107,8 +107,9 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   joint->split = joint->curve->length() * share_before / (share_before + share_after);
   const double covered = a.full.covered_distance() * a.d_start / len;
   a.covered_used += covered;
-  joint->before = {p.from_index, p.from_covered, p.from_velocity};
-  joint->after = {a.index, covered, a.full.programmed_velocity()};
+  joint->before = {p.from_index, p.from_covered, p.from_velocity, p.from_v_cap, p.from_a_cap, p.from_j_cap};
+  joint->after = {a.index, covered, a.full.programmed_velocity(), a.motion.path_v_cap, a.motion.path_a_cap,
+                  a.motion.path_j_cap};
   const double split = joint->split, length = joint->curve->length();
   std::shared_ptr<const ContourJoint> shared = std::move(joint);
   out.push_back({p.from_index, PathSegment(shared, 0, split, false, machine_), p.from_slope, false, false, true});
@@ -209,6 +210,9 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
       p.from_index = a.index;
       p.from_slope = a.slope;
       p.from_velocity = a.full.programmed_velocity();
+      p.from_v_cap = a.motion.path_v_cap;
+      p.from_a_cap = a.motion.path_a_cap;
+      p.from_j_cap = a.motion.path_j_cap;
       p.from_covered = a.full.covered_distance() - a.covered_used;
       p.kappa_cap = kappa_cap(a.out, distance(p.start.point, p.end.point));
       p.d = d;

@@ -39,10 +39,9 @@ struct Corner {
   ContourMode mode;
 };
 
-// How the path leaves `block` into the next motion block. The hook for
-// the lift function (TF5200_lift_function.txt: "additional path smoothing
-// (G61/G261) is not possible in the lifting range"): once blocks carry
-// LIFT_START / LIFT_END, those must return an exact transition here.
+// How the path leaves `block` into the next motion block. The lift
+// function's preparation has already turned the transitions it suppresses
+// into standard ones (prepare_lift_ranges, LIFT-3).
 inline Corner corner_after(const Block& block) { return {block.transition, block.contour}; }
 
 struct PathPiece {
@@ -91,6 +90,7 @@ class ContourBuilder {
     size_t from_index = 0;
     SlopeType from_slope = SlopeType::trapez;
     double from_velocity = 0, from_covered = 0;
+    double from_v_cap = 0, from_a_cap = 0, from_j_cap = 0;  // the lift's caps of its block
     double kappa_cap = 0;  // largest curvature the end may get (PATH_DEV)
     double d = 0;
     double d_before = 0;  // programmed length it replaces before the corner

@@ -35,11 +35,25 @@ PathSegment::PathSegment(std::shared_ptr<const ContourJoint> joint, double s_fro
       joint_(std::move(joint)),
       s_from_(s_from),
       reversed_(reversed) {
-  // The lower velocity of the halves it lies on.
+  // The lower velocity and caps of the halves it lies on.
   double programmed_velocity = inf;
-  if (s_from < joint_->split) programmed_velocity = joint_->before.programmed_velocity;
-  if (s_to > joint_->split) programmed_velocity = std::min(programmed_velocity, joint_->after.programmed_velocity);
+  Limits cap{inf, inf, inf};
+  for (const ContourJoint::Half* half : {s_from < joint_->split ? &joint_->before : nullptr,
+                                         s_to > joint_->split ? &joint_->after : nullptr}) {
+    if (!half) continue;
+    programmed_velocity = std::min(programmed_velocity, half->programmed_velocity);
+    cap = {std::min(cap.v, half->v_cap), std::min(cap.a, half->a_cap), std::min(cap.j, half->j_cap)};
+  }
+  // In a lift range the lift's time bound counts the covered distance, of
+  // which a curve covers more than its own length (it cuts the corner):
+  // there the velocity counts covered distance per second (LIFT-2, LIFT-8).
+  if (cap.v < inf && length_ > 0 && covered_distance_ > length_) {
+    const double shorter = length_ / covered_distance_;
+    cap.v *= shorter;
+    programmed_velocity *= shorter;
+  }
   set_contour_limits(machine, programmed_velocity);
+  limits_ = {std::min(limits_.v, cap.v), std::min(limits_.a, cap.a), std::min(limits_.j, cap.j)};
   programmed_velocity_ = std::min(programmed_velocity, limits_.v);
 }
 

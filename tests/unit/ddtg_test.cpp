@@ -457,27 +457,37 @@ TEST_CASE("DDTG-8 skipping #CS is error 51016: the path stays at the stop positi
   CHECK(refused->block_nr == 15);
 }
 
-TEST_CASE("DDTG-8 #CHANNEL INIT ends the search for the end marker: short cut to before it, warning 51036",
+TEST_CASE("DDTG-8 #CHANNEL INIT, G74 homing and G100 measuring end the search for the end marker: short cut to "
+          "before them, warning 51036",
           "[ddtg]") {
-  // TF5200_delete_distance_to_go.txt 2.5: the program goes on from there.
-  std::vector<Event> events;
-  const auto samples = run_with_ddtg(
-      "N10 G1 X80 F3000\nN20 Y60\nN25 #CHANNEL INIT [CMDPOS]\nN30 X0\nN31 #DEL DIST2GO\nN40 Y0\nM30\n", {500}, 300,
-      &events, 1);
-  const Sample* cut = first_active(samples);
-  REQUIRE(cut != nullptr);
-  CHECK(cut->block_nr == 20);
-  for (const Sample& s : samples)
-    if (s.active) CHECK(off_line(s.x, s.y, cut->x, cut->y, 80, 60) < 1e-9);  // to N20's end, not N30's
-  bool passed_n30 = false;
-  for (const Sample& s : samples) passed_n30 = passed_n30 || (s.block_nr == 30 && s.x < 40);
-  CHECK(passed_n30);  // N30 runs as programmed after the short cut
-  CHECK(samples.back().x == Approx(0).margin(1e-9));
-  CHECK(samples.back().y == Approx(0).margin(1e-9));
-  const Event* warned = nullptr;
-  for (const Event& e : events)
-    if (e.id == 51036) warned = &e;
-  REQUIRE(warned != nullptr);
-  CHECK(warned->severity == Severity::warning);
-  CHECK(warned->block_nr == 25);
+  // TF5200_delete_distance_to_go.txt 2.5: "channel initialisation is
+  // required with: #CHANNEL INIT ... Homing G74, Measuring functions
+  // G100"; the program goes on from there.
+  for (const std::string command : {"#CHANNEL INIT [CMDPOS]", "G74 X1", "G100 X40 Y30"}) {
+    CAPTURE(command);
+    std::vector<Event> events;
+    const auto samples = run_with_ddtg(
+        "N10 G1 X80 F3000\nN20 Y60\nN25 " + command + "\nN30 X0\nN31 #DEL DIST2GO\nN40 Y0\nM30\n", {500}, 300,
+        &events, 1);
+    const Sample* cut = first_active(samples);
+    REQUIRE(cut != nullptr);
+    CHECK(cut->block_nr == 20);
+    for (const Sample& s : samples)
+      if (s.active) CHECK(off_line(s.x, s.y, cut->x, cut->y, 80, 60) < 1e-9);  // to N20's end, not beyond N25
+    bool went_on = false;
+    for (const Sample& s : samples) went_on = went_on || (s.block_nr >= 25 && !s.active && s.x < 40);
+    CHECK(went_on);  // N25 and N30 run as programmed after the short cut
+    CHECK(samples.back().x == Approx(0).margin(1e-9));
+    CHECK(samples.back().y == Approx(0).margin(1e-9));
+    const Event* warned = nullptr;
+    for (const Event& e : events)
+      if (e.id == 51036) warned = &e;
+    REQUIRE(warned != nullptr);
+    CHECK(warned->severity == Severity::warning);
+    CHECK(warned->block_nr == 25);
+    const DecodedProgram p = decode_program("N10 G1 X80 F3000\nN25 " + command + "\nM30\n", test::xyz_machine(), {0, 0, 0});
+    REQUIRE_FALSE(p.error);
+    CHECK(p.blocks[1].short_cut_restriction == ShortCutRestriction::channel_initialisation);
+    CHECK(p.blocks[1].stops_path());  // the path stands still before it
+  }
 }

@@ -511,3 +511,74 @@ TEST_CASE("DPS-3 LIFT-2 channel: a reset while the path stands but the lift axis
   for (int i = 0; i < 50; ++i) rig.step();
   rig.require_within_limits();
 }
+
+// TF5200_lift_function.txt, "Path smoothing and lifting": with G261 the
+// other axes are contoured into and out of the range where the lift axis
+// does not move in the block before LIFT_START or directly after LIFT_END
+// (2nd case); where it moves there, that corner stops (1st case).
+TEST_CASE("LIFT-2 KRN-6 G261: the path passes the corners into and out of an Advanced Lifting range without "
+          "stopping where the lift axis stands still beside it, and stops where it moves",
+          "[lift][channel]") {
+  auto slowest_near = [](const std::string& program, LiftMethod method, double corner_x) {
+    MachineConfig m = test::xyz_lift_machine();
+    m.lift_method = method;
+    LiftRig rig(program, m);
+    rig.start();
+    double slowest = 1e9;
+    while (!rig.done() && rig.k < 200000) {
+      rig.step();
+      if (std::abs(rig.axis(X) - corner_x) < 1) slowest = std::min(slowest, rig.hli().path_velocity);
+    }
+    REQUIRE(rig.hli().channel_state == ChannelState::program_end);
+    rig.require_within_limits();
+    return slowest;
+  };
+  auto program = [](const std::string& before, double pos, const std::string& after) {
+    return "N05 G01 X0 Y0 Z10 F3000\n#CONTOUR MODE [DEV PATH_DEV=0.5]\nN10 G261 X20 Y10" + before + "\nN15 Z[LIFT_START POS=" + std::to_string(pos) +
+           " POS_LIMIT=30]\nN20 X40 Y0\nN30 X60 Y10\nN40 X80 Y0\nN45 Z[LIFT_END]\nN50 X100 Y10" + after +
+           "\nN60 M30\n";
+  };
+  const std::string still = program("", 10, " Z10");
+  const std::string moving = program(" Z11", 11, " Z14");
+  const std::string higher = program("", 12, "");
+  SECTION("Advanced Lifting") {
+    const LiftMethod method = LiftMethod::time_based;
+    CHECK(slowest_near(still, method, 20) > 5);  // into the range: contoured
+    CHECK(slowest_near(still, method, 80) > 5);  // out of it
+    CHECK(slowest_near(moving, method, 20) < 0.01);  // the corner stops
+    CHECK(slowest_near(moving, method, 80) < 0.01);
+    // Landing higher than it started: the path's lift axis steps at the
+    // range's end (the lift bridges it), so that corner stops.
+    CHECK(slowest_near(higher, method, 20) > 5);
+    CHECK(slowest_near(higher, method, 80) < 0.01);
+  }
+  SECTION("Lifting: coupled to the covered distance, the 1st case at both ends") {
+    const LiftMethod method = LiftMethod::path_based;
+    CHECK(slowest_near(still, method, 20) < 0.01);
+    CHECK(slowest_near(still, method, 80) < 0.01);
+  }
+}
+
+
+// Found by the channel fuzz (lift kind, seed 2672): G61 into a range of
+// 0.015 mm. The curve's half in the range covers more programmed distance
+// than its length; had its velocity counted length, the path would have
+// left the range before the lift axis landed (an error at program end).
+TEST_CASE("LIFT-2 KRN-6 a contouring curve into a short Advanced Lifting range: the lift axis lands before the path "
+          "leaves it",
+          "[lift][channel]") {
+  LiftRig rig(
+      "N10 G90 G01 X0 Y0 Z10 F9619\n"
+      "N30 G01 X-11.714287135 Y3.157297805\n"
+      "N40 G01 X-12.012035992 Y3.31777443 G61\n"
+      "N50 Z[LIFT_START POS=15.593347017 POS_LIMIT=20]\n"
+      "N60 G01 X-11.997920195 Y3.313315158\n"
+      "N80 Z[LIFT_END]\n"
+      "N110 M30\n",
+      test::xyz_lift_machine());
+  rig.start();
+  rig.run_to_end();
+  CHECK(rig.hli().channel_state == ChannelState::program_end);
+  CHECK(rig.axis(Z) == Approx(15.593347017).margin(1e-9));
+  rig.require_within_limits();
+}

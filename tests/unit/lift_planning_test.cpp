@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "advanced_lifting.hpp"
@@ -231,7 +232,13 @@ TEST_CASE("LIFT-1 LIFT-3 LIFT-5: the path preparation finds the ranges and caps 
   }
 }
 
-TEST_CASE("LIFT-3 KRN-6 no contouring into, out of, or (Lifting) inside a lift range", "[lift]") {
+// TF5200_lift_function.txt, "Path smoothing and lifting": smoothing is
+// suppressed at the start and end of lifting where the lift axis moves in
+// the block before LIFT_START or directly after LIFT_END (1st case); the
+// other axes are smoothed where it does not (2nd case).
+TEST_CASE("LIFT-2 LIFT-3 KRN-6 contouring into and out of an Advanced Lifting range only where the lift axis does not "
+          "move beside it; none into, out of or inside a Lifting range",
+          "[lift]") {
   MachineConfig m = test::xyz_machine();
   std::vector<Block> blocks;
   for (int i = 0; i < 5; ++i) {
@@ -240,24 +247,40 @@ TEST_CASE("LIFT-3 KRN-6 no contouring into, out of, or (Lifting) inside a lift r
   }
   blocks[1].lift_start = LiftStart{2, false, 10, 30};
   blocks[3].lift_end = true;
-  SECTION("Lifting") {
-    m.lift_method = LiftMethod::path_based;
-    std::vector<Block> b = blocks;
-    prepare_lift_ranges(b, m, {0, 0, 10});
-    CHECK(b[0].transition == BlockTransition::standard);  // into the range
-    CHECK(b[1].transition == BlockTransition::standard);  // inside
-    CHECK(b[2].transition == BlockTransition::standard);
-    CHECK(b[3].transition == BlockTransition::standard);  // out of it
-    CHECK(b[4].transition == BlockTransition::contour);
+  auto transitions = [&](std::vector<Block> b, LiftMethod method, const Block* next_motion = nullptr) {
+    m.lift_method = method;
+    prepare_lift_ranges(b, m, {0, 0, 10}, next_motion);
+    std::string out;
+    for (const Block& block : b) out += block.transition == BlockTransition::contour ? 'C' : 's';
+    return out;
+  };
+  SECTION("2nd case: the lift axis stands still before and after the range") {
+    CHECK(transitions(blocks, LiftMethod::path_based) == "ssssC");  // Lifting: 1st case always, none inside
+    CHECK(transitions(blocks, LiftMethod::time_based) == "CCCCC");
   }
-  SECTION("Advanced Lifting: inside, the lift axis does not move with the path") {
-    m.lift_method = LiftMethod::time_based;
+  SECTION("1st case: the lift axis moves in the block before LIFT_START") {
     std::vector<Block> b = blocks;
-    prepare_lift_ranges(b, m, {0, 0, 10});
-    CHECK(b[0].transition == BlockTransition::standard);
-    CHECK(b[1].transition == BlockTransition::contour);
-    CHECK(b[2].transition == BlockTransition::contour);
-    CHECK(b[3].transition == BlockTransition::standard);
-    CHECK(b[4].transition == BlockTransition::contour);
+    b[0].motion.start[2] = 0;
+    CHECK(transitions(b, LiftMethod::path_based) == "ssssC");
+    CHECK(transitions(b, LiftMethod::time_based) == "sCCCC");
+  }
+  SECTION("1st case: the lift axis moves in the block directly after LIFT_END") {
+    std::vector<Block> b = blocks;
+    b[4].motion.end[2] = 0;
+    CHECK(transitions(b, LiftMethod::path_based) == "ssssC");
+    CHECK(transitions(b, LiftMethod::time_based) == "CCCsC");
+  }
+  SECTION("the block after the range not yet among the blocks (streamed): the next motion block decides") {
+    std::vector<Block> b(blocks.begin(), blocks.begin() + 4);
+    Block after = blocks[4];
+    CHECK(transitions(b, LiftMethod::time_based, &after) == "CCCC");
+    after.motion.end[2] = 0;
+    CHECK(transitions(b, LiftMethod::time_based, &after) == "CCCs");
+    CHECK(transitions(b, LiftMethod::time_based, nullptr) == "CCCs");  // nothing follows
+  }
+  SECTION("#FLUSH: where one range ends and the next begins, the lift axis reaches its target: no contouring") {
+    std::vector<Block> b = blocks;
+    b[2].lift_start = LiftStart{2, false, 10, 30};  // LIFT_END and LIFT_START in N2
+    CHECK(transitions(b, LiftMethod::time_based) == "CssCC");
   }
 }

@@ -3,6 +3,10 @@
 // conditions by name, and the cycle each verdict was decided in.
 #include <catch2/catch.hpp>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "config_error.hpp"
 #include "scenario.hpp"
 #include "scenario_fixture.hpp"
@@ -309,7 +313,25 @@ TEST_CASE("RIG-5 stop condition names come from hli.hpp's one list", "[scenario]
     CHECK((all & n.bit) == 0);  // one bit each, none twice
     all |= n.bit;
   }
-  CHECK(stop_condition_names().size() == 17);
+  // KRN-4: every bit of TF5200_insert_stop_cmd.txt's table of stop conditions.
+  const std::vector<std::pair<std::string, int32_t>> text = {
+      {"FEEDHOLD", 0x0001},          {"VFG", 0x0002},
+      {"SINGLE_BLOCK", 0x0004},      {"M00_OR_M01", 0x0010},
+      {"PLC_ACKNOWLEDGE", 0x0020},   {"OVERRIDE_ZERO", 0x0040},
+      {"OVERRIDE_RAPID_ZERO", 0x0080}, {"DELAY_TIME", 0x0200},
+      {"CHANNEL_SYNC", 0x0800},      {"IPO_INPUT_EMPTY", 0x1000},
+      {"IPO_INPUT_DISABLED", 0x2000}, {"WAIT_FOR_AXES", 0x8000},
+      {"CHANNEL_ERROR", 0x00010000}, {"WAIT_TECHNO_ACK", 0x00020000},
+      {"W_C_AFTER_COLLISION", 0x00040000}, {"SLOPE_SUPPLY_PROBLEM", 0x00080000},
+      {"BACK_INTERPOLATION", 0x00100000}, {"STOP_REVERSIBLE", 0x00200000},
+      {"BREAKPOINT_STOP", 0x00400000}, {"M0_STOP", 0x02000000},
+      {"M1_STOP", 0x04000000},       {"INSERT_STOP_AT_DIST", 0x08000000},
+      {"DEC_SYN_CHAN_EMPTY", 0x10000000}};
+  REQUIRE(stop_condition_names().size() == text.size());
+  for (const auto& [name, bit] : text) {
+    CAPTURE(name);
+    CHECK(find_stop_condition("HLI_SC_" + name) == bit);
+  }
 }
 
 TEST_CASE("RIG-5 verdicts carry the cycle they were decided in", "[scenario]") {
