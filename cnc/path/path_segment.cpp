@@ -148,7 +148,13 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
   double sweep = direction_ * (angle_end - angle0_);  // > 0 along the direction
   sweep = std::fmod(sweep + 2 * two_pi, two_pi);
   if (sweep < 1e-9) sweep = two_pi;  // end = start: full circle
-  const double arc_length = radius_ * sweep;
+  sweep_ = sweep;
+  // The decoder accepts an end radius a little off the start radius; the
+  // radius is blended along the arc (a spiral). On a short arc the radial
+  // part can be larger than the arc itself (0.9 um across 0.01 um of arc):
+  // the plane's length bounds both, so that |d(x, y)/ds| <= planar_ everywhere.
+  const double dr = radius_end_ - radius_, r_max = std::max(radius_, radius_end_);
+  const double arc_length = std::hypot(r_max * sweep, dr);
   double sum = arc_length * arc_length;
   for (size_t i = 0; i < start_.size(); ++i)
     if (static_cast<int>(i) != ix_ && static_cast<int>(i) != iy_)
@@ -158,10 +164,16 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
 
   const AxisConfig& x = machine.axes[ix_];
   const AxisConfig& y = machine.axes[iy_];
-  const double c = planar_, r = radius_;
+  const double c = planar_;
+  // |d2(x, y)/ds2| <= kappa and |d3(x, y)/ds3| <= kappa_rate, with the
+  // radius' rate r' = dr / L and the angle's w = sweep / L (on a circle
+  // c^2 / r and c^3 / r^2).
+  const double r_rate = std::abs(dr) / length_, w = sweep / length_;
+  const double kappa = 2 * r_rate * w + r_max * w * w;
+  const double kappa_rate = 3 * r_rate * w * w + r_max * w * w * w;
   const double a_xy = std::min(x.a_max, y.a_max), j_xy = std::min(x.j_max, y.j_max);
-  double v = std::min({std::min(x.v_max, y.v_max) / c, std::sqrt(a_xy * r / 2) / c,
-                       std::cbrt(j_xy * r * r / 3) / c});
+  double v = std::min({std::min(x.v_max, y.v_max) / c, std::sqrt(a_xy / (2 * kappa)),
+                       std::cbrt(j_xy / (3 * kappa_rate))});
   double a = a_xy / (2 * c);
   double j = j_xy / (3 * c);
   for (size_t i = 0; i < start_.size(); ++i) {
@@ -173,7 +185,7 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
     a = std::min(a, machine.axes[i].a_max / share);
     j = std::min(j, machine.axes[i].j_max / share);
   }
-  a = std::min(a, j_xy * r / (9 * c * c * v));
+  a = std::min(a, j_xy / (9 * kappa * v));
   limits_ = {v, a, j};
 }
 
@@ -184,8 +196,7 @@ std::vector<double> PathSegment::position(double s) const {
   if (arc_) {
     // The decoder accepts end radii a little off the start radius: blend
     // them along the arc so the path ends exactly where it was programmed.
-    const double angle = angle_at(s);
-    const double r = radius_ + (radius_end_ - radius_) * s / length_;
+    const double angle = angle_at(s), r = radius_at(s);
     p[ix_] = cx_ + r * std::cos(angle);
     p[iy_] = cy_ + r * std::sin(angle);
   }
@@ -212,9 +223,11 @@ void PathSegment::tangent(double s, double* t) const {
   }
   std::copy(unit_.begin(), unit_.end(), t);
   if (arc_) {
-    const double angle = angle_at(s);
-    t[ix_] = -direction_ * planar_ * std::sin(angle);
-    t[iy_] = direction_ * planar_ * std::cos(angle);
+    // r' u + r phi' n (u radial, n along the direction).
+    const double angle = angle_at(s), radial = (radius_end_ - radius_) / length_;
+    const double along = direction_ * radius_at(s) * sweep_ / length_;
+    t[ix_] = radial * std::cos(angle) - along * std::sin(angle);
+    t[iy_] = radial * std::sin(angle) + along * std::cos(angle);
   }
 }
 
@@ -222,10 +235,11 @@ std::vector<double> PathSegment::curvature(double s) const {
   if (joint_) return joint_->curve->curvature(curve_position(s));  // the same either way
   std::vector<double> k(start_.size(), 0.0);
   if (arc_) {
-    const double angle = angle_at(s);
-    const double scale = planar_ * planar_ / radius_;
-    k[ix_] = -scale * std::cos(angle);
-    k[iy_] = -scale * std::sin(angle);
+    // 2 r' phi' n - r phi'^2 u (r'' = phi'' = 0).
+    const double angle = angle_at(s), w = sweep_ / length_;
+    const double inward = radius_at(s) * w * w, turn = 2 * direction_ * (radius_end_ - radius_) / length_ * w;
+    k[ix_] = -inward * std::cos(angle) - turn * std::sin(angle);
+    k[iy_] = -inward * std::sin(angle) + turn * std::cos(angle);
   }
   return k;
 }

@@ -51,7 +51,8 @@ class PathSegment {
   std::vector<double> curvature(double s) const;
 
  private:
-  double angle_at(double s) const { return angle0_ + direction_ * planar_ * s / radius_; }
+  double angle_at(double s) const { return angle0_ + direction_ * sweep_ * s / length_; }
+  double radius_at(double s) const { return radius_ + (radius_end_ - radius_) * s / length_; }
   void set_line_limits(const Motion& motion, const MachineConfig& machine);
   void set_arc_limits(const Motion& motion, const MachineConfig& machine);
   void set_covered_distance(const MachineConfig& machine);
@@ -61,8 +62,9 @@ class PathSegment {
   AxisValues start_, end_, unit_;  // unit_: d(axis)/ds of the linear axes
   int ix_ = -1, iy_ = -1;                   // arc plane axes
   double cx_ = 0, cy_ = 0, radius_ = 0, radius_end_ = 0, angle0_ = 0;
+  double sweep_ = 0;      // rad, > 0 along the direction
   double direction_ = 1;  // +1 counter-clockwise (G03), -1 clockwise (G02)
-  double planar_ = 0;     // share of the path length on the circle
+  double planar_ = 0;     // share of the path length in the arc's plane (bounds |d(x, y)/ds|)
   double length_ = 0;
   double programmed_velocity_ = 0;
   double covered_distance_ = 0;

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <vector>
 
 #include "decoder.hpp"
 #include "limit_check.hpp"
@@ -67,6 +68,47 @@ TEST_CASE("KRN-3 path: arcs keep every axis within v, a and j, whatever the radi
     // The end point is exact.
     const std::vector<double> end = seg.position(seg.length());
     for (size_t i = 0; i < end.size(); ++i) CHECK(end[i] == Approx(seg.end()[i]).margin(1e-9));
+  }
+}
+
+// The decoder takes an end radius up to 1 um off the start radius; the
+// path blends the radius along the arc (a spiral). On a short arc the
+// radial part outweighs the arc: found by the channel fuzz (a 0.9 um radial
+// step over 0.01 um of arc gave Y a jerk of 844,060 mm/s^3, and
+// dist_prog_start grew slower than the axes moved).
+TEST_CASE("KRN-3 DPS-1 path: an arc whose end radius is a little off keeps every axis within v, a and j, its "
+          "derivatives are the position's, and it covers at least what the axes move",
+          "[path]") {
+  const MachineConfig m = test::xyz_machine();
+  for (const char* nc : {"G01 X0 F30000\nG03 X0.00001 Y-0.0009 I0 J0.01",   // r 0.01 -> 0.0109 over 0.9 mrad
+                         "G01 X0 F30000\nG02 X0.00001 Y0.0009 I0 J-0.01",   // the same, clockwise
+                         "G01 X10 F30000\nG03 X0 Y10.0009 I-10 J0",          // a quarter, 0.9 um off
+                         "G01 X1 F30000\nG03 X1.0000004 Y0.0009 Z3 I-1 J0"}) {  // a helix, 0.8 um off
+    INFO(nc);
+    const PathSegment seg(motion_of(nc), m);
+    const logger::CheckReport report = sample(seg, m);
+    for (const auto& v : report.violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
+    const std::vector<double> end = seg.position(seg.length());
+    for (size_t i = 0; i < end.size(); ++i) CHECK(end[i] == Approx(seg.end()[i]).margin(1e-12));
+    const double L = seg.length(), h = L * 1e-4;
+    double moved = 0;
+    std::vector<double> before = seg.position(0);
+    for (int k = 1; k <= 1000; ++k) {
+      const double s = L * k / 1000;
+      const std::vector<double> p = seg.position(s);
+      double step = 0;
+      for (size_t i = 0; i < p.size(); ++i) step += (p[i] - before[i]) * (p[i] - before[i]);
+      moved += std::sqrt(step);
+      before = p;
+      if (k % 100 != 50) continue;
+      const std::vector<double> t = seg.tangent(s), c = seg.curvature(s);
+      const std::vector<double> ahead = seg.position(s + h), behind = seg.position(s - h);
+      for (size_t i = 0; i < p.size(); ++i) {
+        CHECK(t[i] == Approx((ahead[i] - behind[i]) / (2 * h)).margin(1e-6));
+        CHECK(c[i] == Approx((ahead[i] - 2 * p[i] + behind[i]) / (h * h)).epsilon(1e-3).margin(1e-6 / L));
+      }
+    }
+    CHECK(seg.covered_distance() >= moved * (1 - 1e-12));  // DPS-1: never behind the axes
   }
 }
 
