@@ -106,8 +106,7 @@ void suppress_contouring_at_ends(std::vector<Block>& blocks, const std::vector<L
     // lies elsewhere the path steps there at the range's end and only the
     // lift bridges it: a curve across the step would move the lift axis.
     const bool step = blocks[last].motion.end[axis] != range.command.pos;
-    if (always || !after || after_in_range || after->lift_start || moves(*after, axis) || step)
-      suppress(blocks[last]);
+    if (always || !after || after_in_range || moves(*after, axis) || step) suppress(blocks[last]);
   }
 }
 

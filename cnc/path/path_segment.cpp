@@ -38,12 +38,12 @@ PathSegment::PathSegment(std::shared_ptr<const ContourJoint> joint, double s_fro
   // The lower velocity and caps of the halves it lies on.
   double programmed_velocity = inf;
   Limits cap{inf, inf, inf};
-  for (const ContourJoint::Half* half : {s_from < joint_->split ? &joint_->before : nullptr,
-                                         s_to > joint_->split ? &joint_->after : nullptr}) {
-    if (!half) continue;
-    programmed_velocity = std::min(programmed_velocity, half->programmed_velocity);
-    cap = {std::min(cap.v, half->v_cap), std::min(cap.a, half->a_cap), std::min(cap.j, half->j_cap)};
-  }
+  auto lies_on = [&](const ContourJoint::Half& half) {
+    programmed_velocity = std::min(programmed_velocity, half.programmed_velocity);
+    cap = {std::min(cap.v, half.v_cap), std::min(cap.a, half.a_cap), std::min(cap.j, half.j_cap)};
+  };
+  if (s_from < joint_->split) lies_on(joint_->before);
+  if (s_to > joint_->split) lies_on(joint_->after);
   // In a lift range the lift's time bound counts the covered distance, of
   // which a curve covers more than its own length (it cuts the corner):
   // there the velocity counts covered distance per second (LIFT-2, LIFT-8).

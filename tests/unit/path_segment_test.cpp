@@ -32,6 +32,14 @@ logger::CheckReport sample(const PathSegment& seg, MachineConfig machine) {
   return checker.finish();
 }
 
+// No axis beyond its v, a, j on a rest-to-rest run, and the segment ends
+// on its programmed end point within `margin`.
+void check_limits_and_end(const PathSegment& seg, const MachineConfig& machine, double margin) {
+  for (const auto& v : sample(seg, machine).violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
+  const std::vector<double> end = seg.position(seg.length());
+  for (size_t i = 0; i < end.size(); ++i) CHECK(end[i] == Approx(seg.end()[i]).margin(margin));
+}
+
 Motion motion_of(const std::string& nc) {
   const DecodedProgram p = decode_program(nc, test::xyz_machine(), {0, 0, 0});
   REQUIRE_FALSE(p.error);
@@ -62,12 +70,7 @@ TEST_CASE("KRN-3 path: arcs keep every axis within v, a and j, whatever the radi
                          "G01 X100 F30000\nG03 X-100 Y0 I-100",   // half, r = 100
                          "G01 X5 F30000\nG03 X-5 Y0 Z20 I-5"}) {  // helix
     INFO(nc);
-    const PathSegment seg(motion_of(nc), m);
-    const logger::CheckReport report = sample(seg, m);
-    for (const auto& v : report.violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
-    // The end point is exact.
-    const std::vector<double> end = seg.position(seg.length());
-    for (size_t i = 0; i < end.size(); ++i) CHECK(end[i] == Approx(seg.end()[i]).margin(1e-9));
+    check_limits_and_end(PathSegment(motion_of(nc), m), m, 1e-9);
   }
 }
 
@@ -86,10 +89,7 @@ TEST_CASE("KRN-3 DPS-1 path: an arc whose end radius is a little off keeps every
                          "G01 X1 F30000\nG03 X1.0000004 Y0.0009 Z3 I-1 J0"}) {  // a helix, 0.8 um off
     INFO(nc);
     const PathSegment seg(motion_of(nc), m);
-    const logger::CheckReport report = sample(seg, m);
-    for (const auto& v : report.violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
-    const std::vector<double> end = seg.position(seg.length());
-    for (size_t i = 0; i < end.size(); ++i) CHECK(end[i] == Approx(seg.end()[i]).margin(1e-12));
+    check_limits_and_end(seg, m, 1e-12);
     const double L = seg.length(), h = L * 1e-4;
     double moved = 0;
     std::vector<double> before = seg.position(0);
