@@ -19,7 +19,6 @@ LimitChecker::LimitChecker(const MachineConfig& machine)
     s.a_err_limit = a.accel_error_limit();
     s.v_err_limit = a.velocity_error_limit();
     s.slep_max = a.slep_max;
-    s.j_lift_limit = a.j_max * std::max(1.0, a.dyn_monitoring_a_err / 1000.0);
   }
 }
 
@@ -27,7 +26,10 @@ void LimitChecker::add_lift_active(int axis, int64_t cycle) {
   if (lift_active_[axis].insert(cycle).second) ++summary_[axis].lift_cycles;
 }
 
+void LimitChecker::add_path_velocity(int64_t cycle, double path_velocity) { path_velocity_[cycle] = path_velocity; }
+
 void LimitChecker::add_hli_state(const HliState& state) {
+  add_path_velocity(state.cycle, state.path_velocity);
   for (size_t i = 0; i < state.axis_name.size() && i < state.lift_active.size(); ++i) {
     if (!state.lift_active[i]) continue;
     const int axis = machine_.axis_index(state.axis_name[i]);
@@ -101,6 +103,14 @@ CheckReport LimitChecker::finish() const {
   CheckReport report;
   report.violations = actual_violations_;
   const double dt = machine_.cycle_time_s();
+  // Cycles whose path velocity differs from the cycle before's (or that
+  // cycle is unknown: then no constant velocity is shown).
+  std::unordered_set<int64_t> feed_changes;
+  for (const auto& [cycle, v] : path_velocity_) {
+    const auto before = path_velocity_.find(cycle - 1);
+    if (before == path_velocity_.end() || !(std::abs(v - before->second) <= 1e-9 * (1 + std::abs(v))))
+      feed_changes.insert(cycle);
+  }
   for (size_t i = 0; i < setpoints_.size(); ++i) {
     const Trace& t = setpoints_[i];
     AxisSummary& s = summary_[i];
@@ -114,15 +124,21 @@ CheckReport LimitChecker::finish() const {
     // Differences only across consecutive cycles; a gap restarts them.
     double v1 = 0, a1 = 0;
     int run = 0;  // consecutive samples so far
-    // A difference is in the lift's overload range if a cycle it spans
-    // showed lift_active: the k-th difference at cycle c mixes the motion
-    // of cycles c-k .. c.
-    const std::unordered_set<int64_t>& lift = lift_active_[i];
-    auto lifting = [&](int64_t cycle, int back) {
-      if (lift.empty()) return false;
+    // A difference belongs to the lift if a cycle it spans showed
+    // lift_active: the k-th difference at cycle c mixes the motion of
+    // cycles c-k .. c (`spans`; asked the same of the path velocity's changes).
+    auto spans = [](const std::unordered_set<int64_t>& cycles, int64_t cycle, int back) {
+      if (cycles.empty()) return false;
       for (int b = 0; b <= back; ++b)
-        if (lift.count(cycle - b)) return true;
+        if (cycles.count(cycle - b)) return true;
       return false;
+    };
+    const std::unordered_set<int64_t>& lift = lift_active_[i];
+    // Lifting's acceleration goes beyond a_max only through the path's own
+    // (z'' = z_qq v^2 + z_q a_path): one cycle more, for the HLI's velocity
+    // of a cycle and the setpoint's.
+    auto overload_allowed = [&](int64_t cycle) {
+      return machine_.lift_method == LiftMethod::time_based || spans(feed_changes, cycle, 3);
     };
     const AxisConfig& axis = machine_.axes[i];
     for (size_t k = 0; k < t.position.size(); ++k) {
@@ -142,16 +158,19 @@ CheckReport LimitChecker::finish() const {
       check(report.violations, s.cmd_v, v, s.v_max, t.cycle[k], s.axis, "commanded velocity", noise[1]);
       if (run >= 3) {
         const double a = (v - v1) / dt;
-        if (lifting(t.cycle[k], 2))
+        if (!spans(lift, t.cycle[k], 2))
+          check(report.violations, s.cmd_a, a, s.a_max, t.cycle[k], s.axis, "commanded acceleration", noise[2]);
+        else if (overload_allowed(t.cycle[k]))
           check(report.violations, s.cmd_a_lift, a, axis.accel_error_limit(), t.cycle[k], s.axis,
                 "commanded acceleration (lift overload range, P-AXIS-00442)", noise[2]);
         else
-          check(report.violations, s.cmd_a, a, s.a_max, t.cycle[k], s.axis, "commanded acceleration", noise[2]);
+          check(report.violations, s.cmd_a_lift, a, s.a_max, t.cycle[k], s.axis,
+                "commanded acceleration (Lifting at constant path velocity, a_max)", noise[2]);
         if (run >= 4) {
           const double j = (a - a1) / dt;
-          if (lifting(t.cycle[k], 3))
-            check(report.violations, s.cmd_j_lift, j, s.j_lift_limit, t.cycle[k], s.axis,
-                  "commanded jerk (lift overload range, P-AXIS-00442)", noise[3]);
+          if (spans(lift, t.cycle[k], 3))
+            check(report.violations, s.cmd_j_lift, j, s.j_max, t.cycle[k], s.axis, "commanded jerk (lift, j_max)",
+                  noise[3]);
           else
             check(report.violations, s.cmd_j, j, s.j_max, t.cycle[k], s.axis, "commanded jerk", noise[3]);
         }

@@ -6,6 +6,7 @@
 // maximum, and the check does not trust what the CNC says of itself.
 #include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -34,11 +35,11 @@ struct AxisSummary {
   double following_error = 0;              // max |.|
   double v_max = 0, a_max = 0, j_max = 0, a_err_limit = 0, v_err_limit = 0, slep_max = 0;
   int64_t setpoints = 0, states = 0;       // samples seen
-  // The lift's overload range (LIFT-2): max |commanded a| and |j| of the
-  // differences that span a cycle with lift_active, the jerk limit there
-  // (j_max * max(1, P-AXIS-00442 / 1000); a's is a_err_limit), and how
-  // many cycles the HLI showed lift_active.
-  double cmd_a_lift = 0, cmd_j_lift = 0, j_lift_limit = 0;
+  // The lift (LIFT-2, LIFT-3): max |commanded a| and |j| of the
+  // differences that span a cycle with lift_active (a within the overload
+  // range a_err_limit where the text allows it, j within j_max always),
+  // and how many cycles the HLI showed lift_active.
+  double cmd_a_lift = 0, cmd_j_lift = 0;
   int64_t lift_cycles = 0;
 };
 
@@ -56,11 +57,16 @@ class LimitChecker {
   void add_setpoint(int axis, int64_t cycle, double position);
   void add_actual(int axis, int64_t cycle, double position, double velocity, double acceleration,
                   double following_error);
-  // The HLI state of a cycle (LIFT-7): in a cycle with lift_active for an
-  // axis, its commanded acceleration may reach P-AXIS-00442's limit and its
-  // jerk j_max * max(1, P-AXIS-00442 / 1000) (TF5200 plans the lift axis in
-  // this overload range); its velocity stays within v_max. Axes by name.
+  // The HLI state of a cycle (LIFT-7), in cycle order: where an axis shows
+  // lift_active, its commanded acceleration may reach P-AXIS-00442's limit
+  // (the overload range) where TF5200_lift_function.txt allows it —
+  // Advanced Lifting throughout (P-AXIS-00442 "is used to plan lift
+  // acceleration"), Lifting only while the path velocity changes ("if the
+  // path feed rate is changed during the lifting motion"; at constant path
+  // velocity a_max). Velocity and jerk stay within v_max and j_max ("the Z
+  // axis moves with jerk limiting"). Axes by name.
   void add_lift_active(int axis, int64_t cycle);
+  void add_path_velocity(int64_t cycle, double path_velocity);
   void add_hli_state(const HliState& state);
   CheckReport finish() const;
 
@@ -81,6 +87,7 @@ class LimitChecker {
   MachineConfig machine_;
   std::vector<Trace> setpoints_;
   std::vector<std::unordered_set<int64_t>> lift_active_;  // per axis: the cycles with lift_active
+  std::unordered_map<int64_t, double> path_velocity_;  // per cycle, mm/s
   mutable std::vector<AxisSummary> summary_;
   std::vector<Violation> actual_violations_;
 };

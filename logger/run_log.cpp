@@ -145,7 +145,9 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       log.hli.block_nr_r.push_back(m.block_nr_r);
       log.hli.channel_state.push_back(m.channel_state);
       log.hli.block_search_state.push_back(m.block_search.state_r.state);
-      // The lift's overload range (LIFT-2): the cycles each axis lifts.
+      // The lift's limits (LIFT-2, LIFT-3): the cycles each axis lifts, and
+      // where the path velocity changes.
+      if (checker) checker->add_path_velocity(m.cycle, m.path_velocity);
       for (size_t i = 0; checker && i < m.lift_active.size() && i < m.axis_name.size(); ++i)
         if (m.lift_active[i])
           if (const int axis = log.scenario->machine.axis_index(m.axis_name[i]); axis >= 0)

@@ -82,9 +82,10 @@ std::string format_limits(const logger::CheckReport& report) {
     row("actual |a| [" + u + "/s^2] / P-AXIS-00442", a.act_a, a.a_err_limit);
     row("|following error| [" + u + "] / P-AXIS-00168", a.following_error, a.slep_max);
     if (!lifted) continue;
-    // The lift's overload range: TF5200 plans the lift axis up to P-AXIS-00442.
+    // The lift's overload range: TF5200 plans the lift axis up to P-AXIS-00442;
+    // its jerk stays within j_max.
     row("lifting |a| [" + u + "/s^2] / P-AXIS-00442", a.cmd_a_lift, a.a_err_limit);
-    row("lifting |j| [" + u + "/s^3] / j_max*00442/1000", a.cmd_j_lift, a.j_lift_limit);
+    row("lifting |j| [" + u + "/s^3] / j_max", a.cmd_j_lift, a.j_max);
     char note[200];
     std::snprintf(note, sizeof note, "  lift_active %lld cycles: commanded |a| up to %.2f a_max%s\n",
                   static_cast<long long>(a.lift_cycles), a.a_max > 0 ? a.cmd_a_lift / a.a_max : 0.0,

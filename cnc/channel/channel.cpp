@@ -222,7 +222,7 @@ void Channel::interpolate(double t) {
   take_stream_events();
   if (progress == PathProgress::all_blocks_run || progress == PathProgress::invalid_block) lift_->all_blocks_run();
   setpoints_ = path_->setpoints();
-  if (lift_->update(*path_, hli_.override.state_r, setpoints_)) update_hold();
+  if (lift_->update(*path_, t, hli_.override.state_r, setpoints_)) update_hold();
   if (lift_->take_missed_landing()) {
     events_.raise(events_.at_block(Severity::error, "lift function: the path left the lift range before the lift "
                                                     "axis had landed on POS"));

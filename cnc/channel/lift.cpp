@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lift_limits.hpp"
 #include "position_profile.hpp"
 #include "velocity_profile.hpp"
 
@@ -15,9 +16,11 @@ void Lift::begin_program() {
   last_reached_ = 0;
   blocks_run_ = false;
   active_ = path_left_ = positioning_ = landed_ = missed_landing_ = false;
+  starts_next_cycle_ = waits_for_landing_ = false;
   pending_.clear();
   advanced_.reset();
   cap_ = 0;
+  updated_at_.reset();
 }
 
 void Lift::reach_block(size_t index, int32_t override_value) {
@@ -33,12 +36,13 @@ void Lift::reach_block(size_t index, int32_t override_value) {
     return;
   }
   start(r, override_value, covered_);
+  starts_next_cycle_ = true;
 }
 
 void Lift::start(size_t range_index, int32_t override_value, double covered_at_start) {
   current_ = range_index;
   active_ = true;
-  positioning_ = landed_ = false;
+  positioning_ = landed_ = waits_for_landing_ = false;
   covered_at_start_ = covered_at_start;
   path_left_ = range().passed_by(last_reached_);  // one that began while another ended may be run already
   const LiftRange& g = range();
@@ -49,16 +53,19 @@ void Lift::start(size_t range_index, int32_t override_value, double covered_at_s
     position_to(g.command.pos);
   } else if (machine_.lift_method == LiftMethod::time_based) {
     const AxisConfig& axis = machine_.axes[static_cast<size_t>(g.command.axis)];
-    advanced_.emplace(g.z0, g.command.pos, g.peak, advanced_lifting_limits(axis), machine_.cycle_time_s());
+    const double dt = machine_.cycle_time_s();
+    advanced_.emplace(g.z0, g.command.pos, g.peak, advanced_lifting_limits(axis, dt), dt);
     cap_ = override_value;  // LIFT-8: what runs now is accepted
   }
 }
 
 void Lift::position_to(double target) {
   const AxisConfig& axis = machine_.axes[static_cast<size_t>(range().command.axis)];
-  const Limits lim = machine_.lift_method == LiftMethod::time_based ? advanced_lifting_limits(axis)
-                                                                    : Limits{axis.v_max, axis.a_max, axis.j_max};
+  const Limits lim = machine_.lift_method == LiftMethod::time_based
+                         ? advanced_lifting_limits(axis, machine_.cycle_time_s())
+                         : Limits{axis.v_max, axis.a_max, axis.j_max};
   positioning_ = true;
+  waits_for_landing_ = false;  // the positioning holds the path as long as it needs
   hold_position_ = target;
   positioning_profile_ = position_profile(state_, target, lim, SlopeType::trapez);
   since_positioning_ = 0;
@@ -85,7 +92,7 @@ void Lift::land_now(PathInterpolator& path) {
 void Lift::stop_now() {
   if (!active_ || landed_ || (!advanced_ && !positioning_)) return;  // Lifting stops with the path
   const AxisConfig& axis = machine_.axes[static_cast<size_t>(range().command.axis)];
-  const Limits lim = advanced_lifting_limits(axis);
+  const Limits lim = advanced_lifting_limits(axis, machine_.cycle_time_s());
   position_to(velocity_change(state_.v, state_.a, 0, lim, SlopeType::trapez).end(state_).p);
 }
 
@@ -98,12 +105,19 @@ void Lift::finish() {
     parked_axis_ = static_cast<size_t>(range().command.axis);
     parked_ = AxisSetpoint{pos, 0, 0};
   }
-  active_ = positioning_ = landed_ = false;
+  active_ = positioning_ = landed_ = waits_for_landing_ = false;
   advanced_.reset();
   cap_ = 0;
 }
 
-bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vector<AxisSetpoint>& setpoints) {
+bool Lift::update(const PathInterpolator& path, double t, int32_t override_value,
+                  std::vector<AxisSetpoint>& setpoints) {
+  const bool again = updated_at_ == t;
+  updated_at_ = t;
+  if (again && active_) {
+    setpoints[static_cast<size_t>(range().command.axis)] = AxisSetpoint{state_.p, state_.v, state_.a};
+    return false;
+  }
   if (!active_) {
     apply_parked(setpoints);
     return false;
@@ -122,7 +136,10 @@ bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vec
   }
   const LiftRange& g = range();
   const double dt = machine_.cycle_time_s();
-  if (positioning_) {
+  if (std::exchange(starts_next_cycle_, false) && (positioning_ || advanced_)) {
+    // The path's motion of the lift axis came to rest within this cycle:
+    // the lift axis stays on its start state until the cycle's end.
+  } else if (positioning_) {
     since_positioning_ += dt;
     state_ = positioning_profile_.at(since_positioning_);
     if (since_positioning_ >= positioning_profile_.duration()) {
@@ -142,21 +159,31 @@ bool Lift::update(const PathInterpolator& path, int32_t override_value, std::vec
     const double v_programmed = g.v_ahead[std::min(front < g.start ? 0 : front - g.start, g.v_ahead.size() - 1)];
     const int32_t effective = std::min(override_value, cap_);
     const bool was_lowering = advanced_->lowering();
+    const bool held = holds_path();
     const double v = v_programmed * effective / 1000.0;
     state_ = advanced_->step(v > 0 ? rest / v : std::numeric_limits<double>::infinity());
     if (advanced_->landed()) {
       landed_ = true;
+      waits_for_landing_ = false;
       hold_position_ = g.command.pos;
     } else if (!advanced_->lowering()) {
       // Rising: a higher override only as far as the lift axis could still
       // land in time from where it is; lowering: none higher than at its start.
       const double room = 1000.0 * (rest - v * dt) / (v_programmed * (advanced_->landing_s() + 2 * dt));
       const double highest = machine_.override_max_percent * 10.0;
-      cap_ = std::max(effective, static_cast<int32_t>(std::min(std::isfinite(room) ? room : highest, highest)));
+      const double accepted = std::min(std::isfinite(room) ? room : highest, highest);
+      if (effective == 0 && override_value > 0 && accepted < 1) {
+        // It rose while the path stood, and now not even 0.1 % lets it land
+        // in time on what is left: it lands first, the path waits for it
+        // (HLI_SC_WAIT_FOR_AXES); before, both waited for each other.
+        advanced_->land_now();
+        waits_for_landing_ = true;
+      }
+      cap_ = std::max(effective, static_cast<int32_t>(accepted));
     } else if (!was_lowering) {
       cap_ = effective;
     }
-    changed = override_cap(override_value) != effective;
+    changed = override_cap(override_value) != effective || holds_path() != held;
   } else {  // Lifting: over the path parameter q, at tau = q / v_plan
     const double q = std::clamp(since_start_covered(path), 0.0, g.length);
     const MotionState z = g.profile.at(q / g.v_plan);
@@ -184,9 +211,8 @@ void Lift::apply_parked(std::vector<AxisSetpoint>& setpoints) {
 }
 
 bool Lift::holds_path() const {
-  return (active_ && positioning_) || std::any_of(pending_.begin(), pending_.end(), [&](const Pending& p) {
-           return ranges_[p.range].positioning;
-         });
+  if (active_ && (positioning_ || waits_for_landing_)) return true;
+  return std::any_of(pending_.begin(), pending_.end(), [&](const Pending& p) { return ranges_[p.range].positioning; });
 }
 
 int32_t Lift::override_cap(int32_t override_value) const {

@@ -37,10 +37,14 @@ class Lift {
   void reach_block(size_t index, int32_t override_value);
   // Every block has run (program end, or the blocks before a decode error).
   void all_blocks_run() { path_left_ = blocks_run_ = true; }
-  // Once per cycle after the path moved: the lift axis' setpoint into
+  // After the path moved to time `t`: the lift axis' setpoint into
   // `setpoints`. True if what the lift asks of the path changed
-  // (override_cap, holds_path): the channel updates its hold.
-  bool update(const PathInterpolator& path, int32_t override_value, std::vector<AxisSetpoint>& setpoints);
+  // (override_cap, holds_path): the channel updates its hold. The lift
+  // moves on once per cycle: a second call at the same `t` (a program's
+  // first cycle interpolates at its start and in its run) repeats the
+  // setpoint; moving on twice started a lift one cycle ahead, its first
+  // output a cycle late (jerk 1.33 j_max, LIFT-2).
+  bool update(const PathInterpolator& path, double t, int32_t override_value, std::vector<AxisSetpoint>& setpoints);
   // A delete distance to go short cut starts where the path stands: the
   // lift axis lands on POS first (the path waits), then stays there until
   // the range ends. The path's short cut starts from there: placed in `path`.
@@ -50,7 +54,8 @@ class Lift {
 
   // A lift range runs or waits to (the program has not ended before it has).
   bool running() const { return active_ || !pending_.empty(); }
-  // The path waits for the lift axis (a range without path motion, a landing before a short cut).
+  // The path waits for the lift axis (a range without path motion, a
+  // landing before a short cut, a landing no override would leave time for).
   bool holds_path() const;
   // The lift axis moves on a positioning of its own (after stop_now: braking to rest).
   bool positioning() const { return active_ && positioning_; }
@@ -109,10 +114,16 @@ class Lift {
   // Positioning (no path motion, or landing before a short cut): the profile, and how long it has run.
   bool positioning_ = false;
   bool landed_ = false;  // standing at hold_position_ until the range ends
+  bool waits_for_landing_ = false;  // Advanced Lifting lands first, the path waits (LIFT-8)
   double hold_position_ = 0;
   MotionProfile positioning_profile_;
   double since_positioning_ = 0;
   bool missed_landing_ = false;
+  std::optional<double> updated_at_;  // the time of the last update, s
+  // The path reached the range within this cycle: the path's own motion
+  // of the lift axis (the block before) comes to rest somewhere in it, so
+  // the lift's own motion starts at its end (from the next output on).
+  bool starts_next_cycle_ = false;
 };
 
 }  // namespace hil::cnc

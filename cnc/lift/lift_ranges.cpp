@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lift_limits.hpp"
 #include "path_segment.hpp"
 
 namespace hil::cnc {
@@ -15,17 +16,6 @@ constexpr double no_path_mm = 1e-6;
 
 double overload_factor(const AxisConfig& axis) { return axis.dyn_monitoring_a_err / 1000.0; }
 
-// Lifting (path-based, LIFT-3): the lift axis' acceleration is z'' v^2 +
-// z' a_path (z over the path parameter). Planned at half of the overload
-// range (all of a_max when P-AXIS-00442 = 2000), so that the path's own
-// acceleration, capped in the range, can add the other half (the text:
-// a feed rate change may take the lift axis beyond a_max, never beyond
-// a_max * P-AXIS-00442 / 1000). A suppressed lift (LIFT-4) is planned the
-// same way within a_max itself.
-Limits lifting_limits(const AxisConfig& axis, double factor) {
-  return {axis.v_max, std::min(axis.a_max, factor * axis.a_max / 2), std::min(axis.j_max, factor * axis.j_max / 2)};
-}
-
 // The path in a Lifting range: no faster than the profile was planned for,
 // and its acceleration and jerk within what the lift axis' overload range
 // leaves (z''' v^3 + 3 z'' v a_path + z' j_path for the jerk).
@@ -36,7 +26,7 @@ void cap_for_lifting(const LiftRange& range, const AxisConfig& axis, double fact
   const double slope = range.profile.max_speed() / range.v_plan;  // largest |dz/dq|
   if (slope <= 0) return;
   const double a_left = factor * axis.a_max - lift.a;
-  const double j_left = factor * axis.j_max - lift.j;
+  const double j_left = axis.j_max - lift.j;
   a_cap = std::min(a_left / slope, 0.5 * j_left * range.v_plan / (3 * lift.a));
   j_cap = 0.5 * j_left / slope;
 }
@@ -87,9 +77,12 @@ void suppress_contouring_at_ends(std::vector<Block>& blocks, const std::vector<L
   const bool always = method == LiftMethod::path_based;
   for (const LiftRange& range : ranges) {
     const auto axis = static_cast<size_t>(range.command.axis);
+    // A range without path motion: the path stops before it and waits
+    // while the lift axis positions (a curve would run past it into the
+    // block after, moving the lift axis there before the range ran).
     for (size_t k = range.start; k-- > 0;) {
       if (!blocks[k].has_motion) continue;
-      if (always || in_a_range(k) || moves(blocks[k], axis)) suppress(blocks[k]);
+      if (always || range.positioning || in_a_range(k) || moves(blocks[k], axis)) suppress(blocks[k]);
       break;
     }
     const size_t last = last_motion(blocks, range);
@@ -111,10 +104,6 @@ void suppress_contouring_at_ends(std::vector<Block>& blocks, const std::vector<L
 }
 
 }  // namespace
-
-Limits advanced_lifting_limits(const AxisConfig& axis) {
-  return {axis.v_max, advanced_lifting_share * axis.accel_error_limit(), axis.j_max};
-}
 
 std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const MachineConfig& machine,
                                            const std::vector<double>& start_position, const Block* next_motion) {
@@ -182,9 +171,11 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
       blocks[range.start].lift_positioning = pos != z0;
     } else if (machine.lift_method == LiftMethod::time_based) {
       // The path may not reach the end before the lift axis could land even
-      // by the direct move, at the highest override (LIFT-2).
-      const double direct = positioning_time(z0, pos, advanced_lifting_limits(axis));
-      if (direct > 0) v_cap = range.length / (direct * override_max);
+      // by the direct move, at the highest override (LIFT-2); the lift
+      // starts at the end of the cycle the path reaches the range in, and
+      // lands on a cycle: two cycles more.
+      const double direct = positioning_time(z0, pos, advanced_lifting_limits(axis, machine.cycle_time_s()));
+      if (direct > 0) v_cap = range.length / ((direct + 2 * machine.cycle_time_s()) * override_max);
     } else {
       const double factor = range.suppressed ? 1.0 : overload_factor(axis);
       plan_lifting(range, axis, factor, v_programmed);

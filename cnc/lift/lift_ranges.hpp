@@ -43,16 +43,6 @@ struct LiftRange {
   bool passed_by(size_t index) const { return index > end || (index == end && !end_has_motion); }
 };
 
-// The lift axis' limits for its own motion: Advanced Lifting plans up to
-// a_max * P-AXIS-00442 / 1000 (the overload range), less a margin for the
-// drive: the rig monitors the actual acceleration, which follows a
-// commanded turn at the full limit with a small overshoot (3013.6 for 3000
-// mm/s^2 on config/xyz_lift_machine.yaml's Z: P-AXIS-00442 fired).
-// Lifting plans within what is left once the path's own acceleration adds.
-constexpr double advanced_lifting_share = 0.98;
-
-Limits advanced_lifting_limits(const AxisConfig& axis);
-
 // The ranges of `blocks` (positions of the axes at program start:
 // `start_position`), with their motions' path caps set, ranges without
 // path motion marked (Block::lift_positioning) and contouring into and out

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "decoder.hpp"
+#include "drive_model.hpp"
 #include "fuzz_plc.hpp"
 #include "fuzz_rng.hpp"
 #include "limit_check.hpp"
@@ -61,10 +62,35 @@ std::string describe(const FuzzRun& run, const Failure& f) {
   return out.str();
 }
 
-// Lift programs run on a machine that lifts time-based (even seeds) or path-based.
-LiftMethod lift_method_of(const FuzzRun& run) {
-  if (run.kind != ProgramKind::lift) return LiftMethod::none;
-  return run.seed % 2 == 0 ? LiftMethod::time_based : LiftMethod::path_based;
+// Lift programs run on a machine that lifts time-based (even seeds) or
+// path-based, with one of three Z drives by seed / 2 (LIFT-2: Advanced
+// Lifting plans for the drive): config/xyz_machine.yaml's; a stiff one
+// (j_max 90,000, P-AXIS-00441 / 00442 1500 / 1600); a second-order velocity
+// loop with little damping and Coulomb friction.
+MachineConfig machine_of(const FuzzRun& run) {
+  if (run.kind != ProgramKind::lift) return xyz_fuzz_machine(run.override_max_percent);
+  MachineConfig m = xyz_fuzz_machine(run.override_max_percent,
+                                     run.seed % 2 == 0 ? LiftMethod::time_based : LiftMethod::path_based);
+  AxisConfig& z = m.axes[2];
+  switch (run.seed / 2 % 3) {
+    case 1:
+      z.j_max = 90000;
+      z.kv = 40;
+      z.velocity_lag_s = 0.002;
+      z.dyn_monitoring_a_warn = 1500;
+      z.dyn_monitoring_a_err = 1600;
+      break;
+    case 2:
+      z.velocity_loop_order = 2;
+      z.velocity_lag_s = 0.0015;
+      z.velocity_damping = 0.5;
+      z.kv = 30;
+      z.friction_coulomb = 50;
+      break;
+    default:
+      break;
+  }
+  return m;
 }
 
 FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
@@ -73,7 +99,7 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   Rng rng(seed);
   run.kind = options.kind ? *options.kind : all_program_kinds[seed % std::size(all_program_kinds)];
   run.override_max_percent = rng.chance(0.5) ? 100 : 120;
-  const MachineConfig machine = xyz_fuzz_machine(run.override_max_percent, lift_method_of(run));
+  const MachineConfig machine = machine_of(run);
   const double dt = machine.cycle_time_s();
   run.program = generate_program(mix_seed(seed ^ 0x5eed), {run.kind, options.min_items, options.max_items}, machine);
   run.expectations = !options.program_text;
@@ -152,7 +178,7 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
 FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   FuzzRun run = prepare_channel_fuzz(seed, options);
   if (!run.failures.empty()) return run;
-  const MachineConfig machine = xyz_fuzz_machine(run.override_max_percent, lift_method_of(run));
+  const MachineConfig machine = machine_of(run);
   const double dt = machine.cycle_time_s();
   const GeneratedProgram& program = run.program;
   const bool expectations = run.expectations;
@@ -174,6 +200,11 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   line_at.reserve(static_cast<size_t>(std::min<int64_t>(run.cycle_bound, 1 << 20)));
   std::vector<double> previous_position(axes, 0.0);
   std::vector<bool> previous_lifted(axes, false);
+  // LIFT-2: each axis' drive, as the rig simulates it: while Advanced
+  // Lifting lifts, its actual acceleration stays below P-AXIS-00442's limit.
+  std::vector<axis::DriveModel> drives;
+  for (const AxisConfig& a : machine.axes) drives.emplace_back(axis::drive_parameters(a, dt), 0.0);
+  std::vector<bool> drive_failed(axes, false);
   double previous_dps = 0;
   bool previous_backward = false;
   int64_t previous_line = 0;
@@ -295,6 +326,14 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     checker.add_hli_state(s);  // lift_active: the lift's overload range (LIFT-2)
     for (size_t i = 0; i < axes; ++i) {
       checker.add_setpoint(static_cast<int>(i), k, sp[i].position);
+      const double actual = drives[i].step(sp[i].position, sp[i].velocity).acceleration;
+      const double a_err = machine.axes[i].accel_error_limit();
+      if (machine.lift_method == LiftMethod::time_based && s.lift_active[i] && !drive_failed[i] &&
+          !(std::abs(actual) <= a_err)) {
+        drive_failed[i] = true;
+        fail({"drive", k, machine.axes[i].name, "actual acceleration (P-AXIS-00442) while Advanced Lifting lifts",
+              actual, a_err, line, "the drive's monitor would stop the channel"});
+      }
       if (!finite(sp[i].position) || !finite(sp[i].velocity) || !finite(sp[i].acceleration))
         fail({"finite", k, machine.axes[i].name, "setpoint", sp[i].position, 0, line,
               "position/velocity/acceleration not finite"});

@@ -93,7 +93,7 @@ struct FuzzOptions {
 };
 
 struct Failure {
-  std::string invariant;  // "limit", "exception", "finite", "dist_prog_start", "end position", "event", "end"
+  std::string invariant;  // "limit", "drive", "exception", "finite", "dist_prog_start", "end position", "event", "end"
   int64_t cycle = -1;
   std::string axis;
   std::string quantity;

@@ -373,3 +373,20 @@ TEST_CASE("KRN-3 KRN-5 an override change that leaves no plan meeting the stretc
       "N480 M30\n",
                   23506);
 }
+
+TEST_CASE("LIFT-2 LIFT-3 the lift fuzz seeds that broke the lift axis' jerk limit or never ended keep it and end",
+          "[channel][lift][fuzz]") {
+  // Issue 32 / 33 (docs/LIFT.md "What issue 32 found"): 9, 110, 214, 246,
+  // 444: Advanced Lifting moved on twice in a program's first cycle (40,000
+  // mm/s^3 for 30,000); 30, 124, 130: its motion began while the path's of Z
+  // came to rest; 81: Lifting's jerk budget; 6000212: a curve across a range
+  // without path motion (421,461 mm/s^3); 6000474: the lift and the path
+  // waited for each other (no end in 58,565 cycles).
+  hil::fuzz::FuzzOptions options;
+  options.kind = hil::fuzz::ProgramKind::lift;
+  for (uint64_t seed : {9u, 30u, 81u, 110u, 124u, 130u, 214u, 246u, 444u, 6000212u, 6000474u}) {
+    const hil::fuzz::FuzzRun run = hil::fuzz::run_channel_fuzz_isolated(seed, options);
+    INFO("seed " << seed << ": " << (run.failures.empty() ? "" : hil::fuzz::describe(run, run.failures[0])));
+    CHECK(run.passed());
+  }
+}

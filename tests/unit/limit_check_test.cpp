@@ -139,26 +139,41 @@ TEST_CASE("RIG-4 limit check: a position, velocity or acceleration that is not f
 namespace {
 
 // Z (a_max 1500, P-AXIS-00442 2000: 3000 mm/s^2) rest to rest in 200 cycles
-// with a = a0 sin(w t) from cycle 50 on; lift_active (LIFT-7) in
-// `lift_from` .. `lift_to`. v_max 250 and j_max 60000 for the test.
-CheckReport lift_motion(double a0, int64_t lift_from, int64_t lift_to, bool by_hli_state = false) {
+// with a = a0 sin(w t) from cycle 50 on (|j| up to a0 w = 0.0209 a0 / ms);
+// lift_active (LIFT-7) in `lift_from` .. `lift_to`. v_max 250 for the test;
+// the machine lifts by `method`, with `j_max`; the path velocity on the HLI
+// is constant or, with `feed_changes`, changes every cycle.
+struct LiftMotion {
+  double a0 = 0;
+  int64_t lift_from = -1, lift_to = -1;
+  bool by_hli_state = false;
+  LiftMethod method = LiftMethod::time_based;
+  double j_max = 100000;
+  bool feed_changes = false;
+};
+
+CheckReport lift_motion(const LiftMotion& c) {
   MachineConfig m = test::xyz_machine();
+  m.lift_method = c.method;
   m.axes[2].v_max = 250;
-  m.axes[2].j_max = 60000;
+  m.axes[2].j_max = c.j_max;
   LimitChecker checker(m);
   const double dt = m.cycle_time_s(), w = 2 * M_PI / (200 * dt);
   for (int64_t k = 0; k < 400; ++k) {
     const double t = std::clamp<double>(static_cast<double>(k - 50), 0, 200) * dt;
-    checker.add_setpoint(2, k, a0 / w * (t - std::sin(w * t) / w));
-    if (k < lift_from || k > lift_to) continue;
-    if (!by_hli_state) {
-      checker.add_lift_active(2, k);
+    checker.add_setpoint(2, k, c.a0 / w * (t - std::sin(w * t) / w));
+    const double path_velocity = c.feed_changes ? 100 + 0.1 * k : 100;
+    const bool lifting = k >= c.lift_from && k <= c.lift_to;
+    if (!c.by_hli_state) {
+      checker.add_path_velocity(k, path_velocity);
+      if (lifting) checker.add_lift_active(2, k);
       continue;
     }
     HliState s;  // the HLI names the axes: order does not matter
     s.cycle = k;
+    s.path_velocity = path_velocity;
     s.axis_name = {"Z", "X", "Y"};
-    s.lift_active = {true, false, false};
+    s.lift_active = {lifting, false, false};
     checker.add_hli_state(s);
   }
   return checker.finish();
@@ -172,15 +187,14 @@ std::map<std::string, Violation> by_quantity(const CheckReport& r) {
 
 }  // namespace
 
-TEST_CASE("LIFT-2 RIG-4 limit check: a lift-active axis may use the overload range up to P-AXIS-00442", "[check][lift]") {
-  // 1.5 a_max and 1.18 j_max while the HLI shows lift_active: within
-  // a_max * 2000 / 1000 and j_max * 2.
-  const CheckReport r = lift_motion(1.5 * 1500, 50, 250, true);
+TEST_CASE("LIFT-2 RIG-4 limit check: an Advanced Lifting axis may use the overload range up to P-AXIS-00442",
+          "[check][lift]") {
+  // 1.5 a_max while the HLI shows lift_active: within a_max * 2000 / 1000;
+  // |j| 70,700 within j_max 80,000.
+  const CheckReport r = lift_motion({1.5 * 1500, 50, 250, true, LiftMethod::time_based, 80000});
   CHECK(r.passed());
   CHECK(r.axes[2].cmd_a_lift == Approx(2250).epsilon(1e-3));
-  CHECK(r.axes[2].cmd_j_lift > 60000);
-  CHECK(r.axes[2].cmd_j_lift <= r.axes[2].j_lift_limit);
-  CHECK(r.axes[2].j_lift_limit == Approx(120000));
+  CHECK(r.axes[2].cmd_j_lift == Approx(2250 * 2 * M_PI / 0.2).epsilon(1e-2));
   CHECK(r.axes[2].a_err_limit == Approx(3000));
   CHECK(r.axes[2].cmd_a == 0);  // no commanded acceleration outside the lift
   CHECK(r.axes[2].lift_cycles == 201);
@@ -188,9 +202,38 @@ TEST_CASE("LIFT-2 RIG-4 limit check: a lift-active axis may use the overload ran
   CHECK(r.axes[0].cmd_a_lift == 0);
 }
 
+TEST_CASE("LIFT-2 LIFT-3 RIG-4 limit check: a lift-active axis keeps j_max; the overload factor is the "
+          "acceleration's only",
+          "[check][lift]") {
+  // |j| 70,700 against j_max 60,000: the rule before (j_max * P-AXIS-00442 /
+  // 1000 = 120,000 while lifting) passed it.
+  for (const LiftMethod method : {LiftMethod::time_based, LiftMethod::path_based}) {
+    const CheckReport r = lift_motion({1.5 * 1500, 50, 250, true, method, 60000, true});
+    auto found = by_quantity(r);
+    REQUIRE(found.count("Z commanded jerk (lift, j_max)"));
+    CHECK(found["Z commanded jerk (lift, j_max)"].limit == 60000);
+    CHECK(std::abs(found["Z commanded jerk (lift, j_max)"].value) == Approx(2250 * 2 * M_PI / 0.2).epsilon(1e-2));
+    CHECK_FALSE(found.count("Z commanded acceleration (lift overload range, P-AXIS-00442)"));
+    CHECK(r.axes[2].cmd_j_lift > 60000);
+  }
+}
+
+TEST_CASE("LIFT-3 RIG-4 limit check: Lifting goes beyond a_max only while the path velocity changes",
+          "[check][lift]") {
+  // The text: at constant path velocity the lift axis moves "at its maximum
+  // acceleration"; a feed rate change may take it into the overload range.
+  const CheckReport steady = lift_motion({1.5 * 1500, 50, 250, false, LiftMethod::path_based});
+  auto found = by_quantity(steady);
+  REQUIRE(found.count("Z commanded acceleration (Lifting at constant path velocity, a_max)"));
+  CHECK(found["Z commanded acceleration (Lifting at constant path velocity, a_max)"].limit == 1500);
+  CHECK(lift_motion({1.5 * 1500, 50, 250, false, LiftMethod::path_based, 100000, true}).passed());
+  // Advanced Lifting plans the overload range at any path velocity.
+  CHECK(lift_motion({1.5 * 1500, 50, 250, false, LiftMethod::time_based}).passed());
+}
+
 TEST_CASE("LIFT-2 RIG-4 limit check: beyond P-AXIS-00442 a lift-active axis is a violation of the overload range",
           "[check][lift]") {
-  const CheckReport r = lift_motion(2.1 * 1500, 50, 250);
+  const CheckReport r = lift_motion({2.1 * 1500, 50, 250});
   REQUIRE_FALSE(r.passed());
   auto found = by_quantity(r);
   REQUIRE(found.count("Z commanded acceleration (lift overload range, P-AXIS-00442)"));
@@ -203,13 +246,12 @@ TEST_CASE("LIFT-2 RIG-4 limit check: beyond P-AXIS-00442 a lift-active axis is a
 }
 
 TEST_CASE("LIFT-2 RIG-4 limit check: without lift_active the plain a_max and j_max hold", "[check][lift]") {
-  auto found = by_quantity(lift_motion(1.5 * 1500, -1, -1));
+  auto found = by_quantity(lift_motion({1.5 * 1500, -1, -1}));
   REQUIRE(found.count("Z commanded acceleration"));
   CHECK(found["Z commanded acceleration"].limit == 1500);
-  CHECK(found.count("Z commanded jerk"));
   CHECK_FALSE(found.count("Z commanded acceleration (lift overload range, P-AXIS-00442)"));
   // lift_active on another stretch of the run excuses nothing here.
-  found = by_quantity(lift_motion(1.5 * 1500, 300, 399));
+  found = by_quantity(lift_motion({1.5 * 1500, 300, 399}));
   CHECK(found.count("Z commanded acceleration"));
 }
 

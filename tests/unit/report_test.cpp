@@ -12,7 +12,8 @@ using namespace hil;
 TEST_CASE("LIFT-2 RIG-4 report: per axis the commanded |a| while lift_active beside P-AXIS-00442", "[report][lift]") {
   MachineConfig m = test::xyz_machine();  // Z: a_max 1500, P-AXIS-00442 2000: 3000
   m.axes[2].v_max = 250;
-  m.axes[2].j_max = 60000;
+  m.axes[2].j_max = 80000;
+  m.lift_method = LiftMethod::time_based;  // the overload range throughout the lift
   logger::LimitChecker checker(m);
   logger::RunLog log;
   // Z rest to rest in 200 cycles with a = 2250 sin(w t) (1.5 a_max) while lifting.
@@ -25,6 +26,8 @@ TEST_CASE("LIFT-2 RIG-4 report: per axis the commanded |a| while lift_active bes
   const std::string text = rig::format_check(log, checker.finish());
   CHECK_THAT(text, Catch::Contains("lifting |a| [mm/s^2] / P-AXIS-00442"));
   CHECK_THAT(text, Catch::Contains("3000.0000     25.0 %"));
+  CHECK_THAT(text, Catch::Contains("lifting |j| [mm/s^3] / j_max"));
+  CHECK_THAT(text, Catch::Contains("80000.0000"));
   CHECK_THAT(text, Catch::Contains("lift_active 210 cycles: commanded |a| up to 1.50 a_max (the overload range above a_max)"));
   CHECK_THAT(text, Catch::Contains("lift_active 0 cycles: commanded |a| up to 0.00 a_max\n"));
   CHECK_THAT(text, Catch::Contains("limit violations: 0"));

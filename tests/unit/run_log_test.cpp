@@ -58,13 +58,14 @@ struct SyntheticRun {
   };
   std::function<double(int64_t cycle)> x;  // X's setpoints instead of v * t
   bool x_lifts = false;                    // HLI_STATE: lift_active for X in every cycle
+  std::string machine_file = "xyz_machine.yaml";  // under config/
   bool realtime = false;                   // run.realtime (RIG-6)
   bool rt_stats = true;                    // real time: the cnc's final HIL_RT_STATS
   std::vector<std::string> lost;           // whom the cnc's RUN_END says it lost (at cycle 50)
 };
 
 void write_log(const std::string& path, const SyntheticRun& run) {
-  std::ifstream machine(std::string(HIL_SOURCE_DIR) + "/config/xyz_machine.yaml");
+  std::ifstream machine(std::string(HIL_SOURCE_DIR) + "/config/" + run.machine_file);
   std::stringstream yaml;
   yaml << "name: synthetic\nmachine:\n";
   for (std::string line; std::getline(machine, line);) yaml << "  " << line << '\n';
@@ -218,11 +219,12 @@ TEST_CASE("RIG-4 run log: a log is read back with its manifest, events and a lim
 
 TEST_CASE("LIFT-2 RIG-4 run log: HLI_STATE's lift_active gives an axis the overload range, matched by cycle",
           "[log][lift]") {
-  // X: 1.5 a_max (3000 mm/s^2 of 2000; P-AXIS-00442 2000: 4000) and 1.5 j_max
-  // (60000 of 40000: 80000 while lifting), v 150 of 250.
+  // X on an Advanced Lifting machine: 1.5 a_max (3000 mm/s^2 of 2000;
+  // P-AXIS-00442 2000: 4000), j 37500 of 40000, v 240 of 250.
   SyntheticRun run;
-  run.x = [](int64_t k) { return 7.5 * (1 - std::cos(20 * 0.001 * static_cast<double>(k))); };
+  run.x = [](int64_t k) { return 19.2 * (1 - std::cos(12.5 * 0.001 * static_cast<double>(k))); };
   run.x_lifts = true;
+  run.machine_file = "xyz_lift_machine.yaml";
   const std::string path = temp_path("lift.lcmlog");
   write_log(path, run);
   std::optional<logger::CheckReport> report;

@@ -25,4 +25,10 @@ inline MachineConfig xyz_lifting_machine() {
   return parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyz_lifting_machine.yaml"));
 }
 
+// ... with Advanced Lifting on a stiff Z (j_max 90,000, P-AXIS-00442 1600):
+// config/xyz_lift_stiff_machine.yaml.
+inline MachineConfig xyz_lift_stiff_machine() {
+  return parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyz_lift_stiff_machine.yaml"));
+}
+
 }  // namespace hil::test
