@@ -119,11 +119,13 @@ TEST_CASE("KRN-6 KRN-3 KRN-5 DPS-1 channel fuzz, contour kind: polynomial contou
 }
 
 TEST_CASE("LIFT-1 LIFT-2 LIFT-3 LIFT-5 LIFT-8 channel fuzz, lift kind: both lift methods under the random PLC keep "
-          "every axis' limits (the lift axis within its overload range) and land on POS",
+          "every axis' limits (the lift axis' jerk within j_max, its acceleration in the overload range where the "
+          "text allows it, its drive below P-AXIS-00442) and land on POS",
           "[fuzz][lift]") {
   // Lift ranges, single-block lifts, G91, DOWN, POS beyond POS_LIMIT,
   // #FLUSH, ranges left open to M30, around XY motion, M functions and
-  // dwells; feed hold, override, short cuts, insert stops (docs/LIFT.md).
+  // dwells; feed hold, override, short cuts, insert stops (docs/LIFT.md);
+  // three Z drives, a stiff one among them (docs/FUZZ.md).
   FuzzOptions options;
   options.kind = ProgramKind::lift;
   const SeedRange r = run_seeds(1, 1000, options, "lift");
