@@ -26,7 +26,10 @@ void LimitChecker::add_lift_active(int axis, int64_t cycle) {
   if (lift_active_[axis].insert(cycle).second) ++summary_[axis].lift_cycles;
 }
 
-void LimitChecker::add_path_velocity(int64_t cycle, double path_velocity) { path_velocity_[cycle] = path_velocity; }
+// Only Lifting's acceleration rule asks for the path velocity.
+void LimitChecker::add_path_velocity(int64_t cycle, double path_velocity) {
+  if (machine_.lift_method == LiftMethod::path_based) path_velocity_[cycle] = path_velocity;
+}
 
 void LimitChecker::add_hli_state(const HliState& state) {
   add_path_velocity(state.cycle, state.path_velocity);

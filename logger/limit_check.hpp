@@ -87,7 +87,7 @@ class LimitChecker {
   MachineConfig machine_;
   std::vector<Trace> setpoints_;
   std::vector<std::unordered_set<int64_t>> lift_active_;  // per axis: the cycles with lift_active
-  std::unordered_map<int64_t, double> path_velocity_;  // per cycle, mm/s
+  std::unordered_map<int64_t, double> path_velocity_;  // per cycle, mm/s (Lifting only)
   mutable std::vector<AxisSummary> summary_;
   std::vector<Violation> actual_violations_;
 };
