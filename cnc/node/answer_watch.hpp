@@ -30,15 +30,17 @@ class AnswerWatch {
   // The answer to `answered_cycle`, received in cycle `now`: in_time and
   // late are to be used, the others not (a future one is refused: forged).
   Answer take(int64_t answered_cycle, int64_t now);
-  // Cycle `now` has ended. True once the participant has been silent for
-  // more than its watchdog.
-  bool end_cycle(int64_t now);
+  // Cycle `now` has ended; `counted`: it counts towards the watchdog. True
+  // once the participant has been silent for more than its watchdog.
+  bool end_cycle(int64_t now, bool counted = true);
 
   const std::string& name() const { return name_; }
   int64_t watchdog_cycles() const { return watchdog_; }
   const AnswerCounts& counts() const { return counts_; }
-  // Cycles since it was last heard from, at the end of cycle `now`.
-  int64_t silent_cycles(int64_t now) const { return now - heard_in_; }
+  // Counted cycles since it was last heard from.
+  int64_t silent_cycles() const { return silent_; }
+  // All cycles since it was last heard from, at the end of cycle `now`.
+  int64_t cycles_since_heard(int64_t now) const { return now - heard_in_; }
   // The newest cycle answered, -1 if none.
   int64_t newest_answered() const { return newest_; }
 
@@ -49,6 +51,7 @@ class AnswerWatch {
   int64_t newest_ = -1;     // the newest cycle answered
   int64_t heard_in_ = -1;   // the cycle it was last heard in
   int64_t not_in_time_ = 0;  // cycles ended without their answer
+  int64_t silent_ = 0;       // counted cycles ended since it was last heard
 };
 
 }  // namespace hil::cnc_node

@@ -134,9 +134,9 @@ class CncNode : public cnc::CyclePolicy {
   // Real time: sleep until tick k+1 is due (an overrun runs at once), take
   // what has arrived, end cycle k. Never waits for an answer.
   cnc::CycleAnswers real_time_answers(int64_t k) {
-    ticker_.wait(k + 1);
+    const Ticker::Tick tick = ticker_.wait(k + 1);
     take_arrived();
-    RealTimeAnswers::Taken taken = real_time_.end_cycle(wall_us());
+    RealTimeAnswers::Taken taken = real_time_.end_cycle(wall_us(), tick.overrun);
     if ((k + 1) % rt_stats_every_cycles == 0) publish_rt_stats(k, false);
     return cnc::CycleAnswers{taken.control, cnc_node::drive_errors(machine_, taken.axis_errors),
                              std::move(taken.lost)};

@@ -103,7 +103,7 @@ LockStep::Taken LockStep::take() {
     // and waited for (the wall-clock timeout loses a silent one).
     if (a.lost || !a.schedule || !a.watch.end_cycle(cycle_)) return;
     lose(a,
-         "watchdog: no answer for " + std::to_string(a.watch.silent_cycles(cycle_)) + " cycles (" +
+         "watchdog: no answer for " + std::to_string(a.watch.silent_cycles()) + " cycles (" +
              a.watchdog_parameter + " " + std::to_string(a.watch.watchdog_cycles()) + ")",
          a.watchdog_parameter);
   };

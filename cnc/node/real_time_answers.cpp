@@ -31,19 +31,23 @@ bool RealTimeAnswers::take_plc(int64_t cycle, const HliControl& control) {
   return true;
 }
 
-RealTimeAnswers::Taken RealTimeAnswers::end_cycle(int64_t now_us) {
+RealTimeAnswers::Taken RealTimeAnswers::end_cycle(int64_t now_us, bool overrun) {
   Taken t;
   t.control.swap(control_);
   t.axis_errors.swap(errors_);
   errors_.assign(t.axis_errors.size(), 0);
   for (size_t i = 0; i < watches_.size(); ++i) {
     AnswerWatch& w = watches_[i];
-    if (!w.end_cycle(cycle_) || lost_[i]) continue;
+    if (!w.end_cycle(cycle_, !overrun) || lost_[i]) continue;
     lost_[i] = true;
     const std::string parameter = axes_[i].empty() ? "plc_watchdog_cycles" : "watchdog_cycles";
+    const int64_t not_counted = w.cycles_since_heard(cycle_) - w.silent_cycles();
     t.lost.push_back({w.name(), axes_[i],
-                      "watchdog: no answer for " + std::to_string(w.silent_cycles(cycle_)) + " cycles (" + parameter +
-                          " " + std::to_string(w.watchdog_cycles()) + ")",
+                      "watchdog: no answer for " + std::to_string(w.silent_cycles()) + " cycles (" + parameter + " " +
+                          std::to_string(w.watchdog_cycles()) + ")" +
+                          (not_counted > 0 ? ", " + std::to_string(not_counted) +
+                                                 " more the CNC ran late (overruns) not counted"
+                                           : ""),
                       parameter});
     lost_so_far_.emplace_back(w.name(), cycle_);
   }

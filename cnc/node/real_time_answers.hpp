@@ -9,7 +9,7 @@
 // control goes into cycle k+1 (none: the last stays in force), the drives'
 // monitoring bits of every answer taken reach the channel, and a
 // participant silent longer than its watchdog (machine parameters
-// watchdog_cycles, plc_watchdog_cycles) is lost: the channel stops on the
+// watchdog_cycles, plc_watchdog_cycles; cycles the CNC kept in time) is lost: the channel stops on the
 // path, jerk-limited, as on a drive error. The logger answers no cycle: it
 // is lost when its heartbeat is silent for longer than its timeout; there
 // is no flow control (the CNC never waits for it).
@@ -45,8 +45,11 @@ class RealTimeAnswers {
     std::vector<int32_t> axis_errors;        // MONITOR_* bits per axis of the answers taken
     std::vector<cnc::LostParticipant> lost;  // lost at the end of this cycle
   };
-  // The cycle ends (the next tick has come, at wall clock `now_us`).
-  Taken end_cycle(int64_t now_us);
+  // The cycle ends (the next tick has come, at wall clock `now_us`);
+  // `overrun`: the CNC woke for it when the one after was due already — it
+  // was held off itself, nobody had a cycle time to answer, the cycle does
+  // not count towards a watchdog.
+  Taken end_cycle(int64_t now_us, bool overrun = false);
 
   // The drives (machine order), then the PLC.
   const std::vector<AnswerWatch>& watches() const { return watches_; }

@@ -37,12 +37,26 @@ TEST_CASE("RIG-6 RIG-8 answer watch: silent for more than the watchdog's cycles,
   CHECK(w.take(0, 0) == Answer::in_time);
   CHECK_FALSE(w.end_cycle(0));
   for (int64_t k = 1; k <= 20; ++k) CHECK_FALSE(w.end_cycle(k));  // silent 20 cycles: within the watchdog
-  CHECK(w.silent_cycles(20) == 20);
+  CHECK(w.silent_cycles() == 20);
   CHECK(w.end_cycle(21));  // the 21st
   CHECK(w.counts().missing == 21);
   CHECK(w.counts().longest_gap_cycles == 21);
   // one late answer resets the silence
   CHECK(w.take(21, 22) == Answer::late);
   CHECK_FALSE(w.end_cycle(22));
-  CHECK(w.silent_cycles(22) == 0);
+  CHECK(w.silent_cycles() == 0);
+}
+
+TEST_CASE("RIG-6 answer watch: a cycle that does not count (the CNC ran it late) leaves the watchdog where it was",
+          "[RIG-6]") {
+  AnswerWatch w("axis_sim X", 20);
+  CHECK(w.take(0, 0) == Answer::in_time);
+  CHECK_FALSE(w.end_cycle(0));
+  for (int64_t k = 1; k <= 10; ++k) CHECK_FALSE(w.end_cycle(k));
+  for (int64_t k = 11; k <= 60; ++k) CHECK_FALSE(w.end_cycle(k, false));  // a host stall of 50 cycles
+  CHECK(w.silent_cycles() == 10);
+  CHECK(w.cycles_since_heard(60) == 60);
+  CHECK(w.counts().missing == 60);  // counted as missing all the same
+  for (int64_t k = 61; k <= 70; ++k) CHECK_FALSE(w.end_cycle(k));
+  CHECK(w.end_cycle(71));  // the 21st cycle it had the time to answer in
 }

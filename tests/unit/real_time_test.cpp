@@ -179,6 +179,33 @@ TEST_CASE("RIG-6 real time: a participant silent longer than its watchdog is los
   CHECK_THAT(l[0].what, Catch::Contains("no heartbeat for 2001 ms"));
 }
 
+TEST_CASE("RIG-6 real time: cycles the CNC ran late (overruns) do not count towards a watchdog", "[RIG-6][real_time]") {
+  MachineConfig machine = test::xyz_machine();
+  RealTimeAnswers a(machine, false, 2000);
+  auto cycle = [&](int64_t k, bool y_answers, bool overrun) {
+    a.begin(k);
+    for (size_t i = 0; i < machine.axes.size(); ++i)
+      if (i != 1 || y_answers) a.take_axis(i, k, 0);
+    a.take_plc(k, HliControl{});
+    return a.end_cycle(k * 1000, overrun).lost;
+  };
+  // A host stall: the CNC runs 40 cycles at once, nobody answers in them;
+  // Y answers again after it.
+  for (int64_t k = 0; k < 5; ++k) CHECK(cycle(k, true, false).empty());
+  for (int64_t k = 5; k < 45; ++k) CHECK(cycle(k, k < 5, true).empty());
+  for (int64_t k = 45; k < 50; ++k) CHECK(cycle(k, false, false).empty());  // 5 counted cycles silent
+  CHECK(cycle(50, true, false).empty());
+  CHECK(a.watches()[1].counts().longest_gap_cycles == 45);
+  // Y is gone: lost after 21 counted cycles, 40 overrun cycles meanwhile
+  std::vector<cnc::LostParticipant> lost;
+  for (int64_t k = 51; k < 140 && lost.empty(); ++k) lost = cycle(k, false, k >= 60 && k < 100);
+  REQUIRE(lost.size() == 1);
+  CHECK(lost[0].name == "axis_sim Y");
+  CHECK(lost[0].what == "watchdog: no answer for 21 cycles (watchdog_cycles 20), 40 more the CNC ran late (overruns) "
+                        "not counted");
+  CHECK(a.lost()[0].second == 111);
+}
+
 namespace {
 
 // The real-time policy as the node runs it, on a fake clock and a fake
@@ -209,8 +236,8 @@ class FakeRealTime : public cnc::CyclePolicy {
     return true;
   }
   std::optional<cnc::CycleAnswers> answers(int64_t k) override {
-    ticker_.wait(k + 1);
-    RealTimeAnswers::Taken t = answers_.end_cycle(clock_.now_ns() / 1000);
+    const Ticker::Tick tick = ticker_.wait(k + 1);
+    RealTimeAnswers::Taken t = answers_.end_cycle(clock_.now_ns() / 1000, tick.overrun);
     std::vector<cnc::DriveError> errors;
     return cnc::CycleAnswers{t.control, errors, std::move(t.lost)};
   }
