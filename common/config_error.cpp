@@ -43,7 +43,7 @@ std::string number_text(double value) {
   return out.str();
 }
 
-std::string bounds_text(Bounds b) {
+std::string range_text(Bounds b) {
   const bool has_min = std::isfinite(b.min), has_max = std::isfinite(b.max);
   const std::string low = (b.min_open ? "> " : ">= ") + number_text(b.min);
   if (has_min && has_max)
@@ -52,6 +52,17 @@ std::string bounds_text(Bounds b) {
   if (has_min) return low;
   if (has_max) return "<= " + number_text(b.max);
   return "";
+}
+
+std::string bounds_text(Bounds b) { return range_text(b) + (*b.unit ? std::string(" ") + b.unit : ""); }
+
+// A number written non-zero that a double cannot hold as a normal number:
+// 1e-320 reads as a subnormal, 1e-400 as 0. No quantity of a rig is that
+// small; such a value is a slip (a lost exponent sign, a unit far off), and
+// subnormal arithmetic is many times slower, in every cycle.
+bool underflows(const std::string& text, double value) {
+  if (std::fpclassify(value) == FP_SUBNORMAL) return true;
+  return value == 0 && text.substr(0, text.find_first_of("eE")).find_first_of("123456789") != std::string::npos;
 }
 
 ConfigError bad_value(const std::string& where, const std::string& wanted, const YAML::Node& node) {
@@ -151,6 +162,9 @@ double config_number(const YAML::Node& node, const std::string& where, Bounds bo
   if (!node.IsScalar() || !YAML::convert<double>::decode(node, value) || !std::isfinite(value) || value < bounds.min ||
       (bounds.min_open && value == bounds.min) || value > bounds.max)
     throw bad_value(where, wanted, node);
+  if (underflows(node.Scalar(), value))
+    throw ConfigError(where + ": must be " + wanted + ", not " + node.Scalar() +
+                      " (below the smallest normal double, 2.2e-308: write 0 for none)");
   return value;
 }
 

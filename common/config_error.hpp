@@ -32,11 +32,13 @@ std::string closest_key(const std::string& key, const std::vector<std::string>& 
 ConfigError unknown_key(const std::string& where, const std::string& key, const std::vector<std::string>& known,
                         const std::string& noun = "key");
 
-// The range a number must lie in; a bound may be open ("> 0").
+// The range a number must lie in; a bound may be open ("> 0"). `unit`, if
+// any, follows the range in messages ("within 0.1 .. 1e+09 mm/s^3").
 struct Bounds {
   double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
   bool min_open = false;
+  const char* unit = "";
 };
 inline constexpr Bounds any_finite{};
 inline constexpr Bounds positive{0, std::numeric_limits<double>::infinity(), true};
@@ -46,7 +48,8 @@ inline constexpr Bounds non_negative{0, std::numeric_limits<double>::infinity(),
 // the reader would otherwise ignore: a key not in `known`, a key given twice
 // (YAML keeps the first), a node that is no mapping. The getters read a
 // key's value with its type and range checked (yaml-cpp reads .nan and .inf
-// as numbers, so a number must also be finite), naming the key's path.
+// as numbers, so a number must also be finite; 1e-320 and 1e-400 as a
+// subnormal and 0, so it must not underflow), naming the key's path.
 class ConfigMap {
  public:
   ConfigMap(const YAML::Node& node, std::string where, const std::vector<std::string>& known,

@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "config_error.hpp"
 #include "function_lists.hpp"
 #include "hli.hpp"
+#include "machine_ranges.hpp"
 
 namespace hil {
 namespace {
@@ -26,6 +28,15 @@ const std::vector<std::string> axis_keys = {
     "modulo_lower", "modulo_upper", "reference_position", "watchdog_cycles"};
 
 constexpr int64_t int32_max = std::numeric_limits<int32_t>::max();
+constexpr int64_t int32_min = std::numeric_limits<int32_t>::min();
+
+// A range in the axis' units: deg where a linear axis has mm (docs/UNITS.md).
+Bounds in_units(Bounds bounds, bool rotary) {
+  static const std::map<std::string, const char*> deg = {
+      {"mm/s", "deg/s"}, {"mm/s^2", "deg/s^2"}, {"mm/s^3", "deg/s^3"}, {"mm", "deg"}};
+  if (const auto it = deg.find(bounds.unit); rotary && it != deg.end()) bounds.unit = it->second;
+  return bounds;
+}
 
 AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
   const ConfigMap m(node, where, axis_keys);
@@ -34,41 +45,47 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
   if (axis.name.size() != 1 || axis.name.find_first_not_of("ABCUVWXYZ") != std::string::npos)
     throw ConfigError(m.path("name") + ": must be one of the letters A B C U V W X Y Z, not '" + axis.name + "'");
   const std::string at = where + " (axis " + axis.name + ")";
-  axis.v_max = m.number("v_max", positive);
+  namespace range = machine_ranges;
+  const bool rotary = axis.name.find_first_of("ABC") != std::string::npos;
+  const auto units = [rotary](Bounds bounds) { return in_units(bounds, rotary); };
+  axis.v_max = m.number("v_max", units(range::velocity));
   axis.v_rapid = axis.v_max;
-  if (m.get("v_rapid", axis.v_rapid, positive) && axis.v_rapid > axis.v_max)
+  if (m.get("v_rapid", axis.v_rapid, units(range::velocity)) && axis.v_rapid > axis.v_max)
     throw ConfigError(at + ": 'v_rapid' exceeds 'v_max'");
-  axis.a_max = m.number("a_max", positive);
-  m.get("watchdog_cycles", axis.watchdog_cycles, 1, 1000000);
-  axis.j_max = m.number("j_max", positive);
-  axis.kv = m.number("kv", positive);
-  axis.velocity_lag_s = m.number("velocity_lag_s", positive);
+  axis.a_max = m.number("a_max", units(range::acceleration));
+  m.get("watchdog_cycles", axis.watchdog_cycles, range::watchdog_cycles.min, range::watchdog_cycles.max);
+  axis.j_max = m.number("j_max", units(range::jerk));
+  axis.kv = m.number("kv", range::position_gain);
+  axis.velocity_lag_s = m.number("velocity_lag_s", range::velocity_lag);
   m.get("velocity_loop_order", axis.velocity_loop_order, 1, 2);
-  m.get("velocity_damping", axis.velocity_damping, positive);
-  m.get("velocity_feedforward", axis.velocity_feedforward, Bounds{0, 1});
-  m.get("reference_position", axis.reference_position);
-  m.get("drive_acceleration_limit", axis.drive_acceleration_limit, positive);
-  m.get("friction_coulomb", axis.friction_coulomb, non_negative);
-  m.get("friction_viscous", axis.friction_viscous, non_negative);
-  m.get("dyn_monitoring_a_warn", axis.dyn_monitoring_a_warn, 0, int32_max);
-  m.get("dyn_monitoring_a_err", axis.dyn_monitoring_a_err, 0, int32_max);
-  m.get("dyn_monitoring_v_warn", axis.dyn_monitoring_v_warn, 0, int32_max);
-  m.get("dyn_monitoring_v_err", axis.dyn_monitoring_v_err, 0, int32_max);
-  // Values below 1000 would put the monitoring limit below a_max (v_max), so
-  // planned motion would trip it: almost surely the value was meant as a
-  // percentage excess. Refuse rather than guess (docs/UNITS.md).
-  if (axis.dyn_monitoring_a_warn < 1000)
-    throw ConfigError(at + ": P-AXIS-00441 dyn_monitoring_a_warn must be >= 1000 (limit = a_max * value / 1000)");
+  m.get("velocity_damping", axis.velocity_damping, range::damping);
+  m.get("velocity_feedforward", axis.velocity_feedforward, range::feedforward);
+  m.get("reference_position", axis.reference_position, units(range::position));
+  m.get("drive_acceleration_limit", axis.drive_acceleration_limit, units(range::acceleration));
+  m.get("friction_coulomb", axis.friction_coulomb, units(range::coulomb_friction));
+  m.get("friction_viscous", axis.friction_viscous, range::viscous_friction);
+  // P-AXIS-00439 .. 00442 in 1/1000 of v_max / a_max. Below 1000 the
+  // monitoring limit would be below the limit itself, so planned motion
+  // would trip it: almost surely the value was meant as a percentage excess.
+  // Refuse rather than guess (docs/UNITS.md). Above 10000 it monitors nothing.
+  const auto per_mille = [&](const char* key, const char* parameter, const char* limit, int32_t& value) {
+    if (!m.has(key)) return;
+    if (m.whole(key, int32_min, int32_max) < range::monitoring_per_mille.min)
+      throw ConfigError(at + ": " + parameter + " " + key + " must be >= 1000 (limit = " + limit + " * value / 1000)");
+    m.get(key, value, range::monitoring_per_mille.min, range::monitoring_per_mille.max);
+  };
+  per_mille("dyn_monitoring_a_warn", "P-AXIS-00441", "a_max", axis.dyn_monitoring_a_warn);
+  per_mille("dyn_monitoring_a_err", "P-AXIS-00442", "a_max", axis.dyn_monitoring_a_err);
+  per_mille("dyn_monitoring_v_warn", "P-AXIS-00439", "v_max", axis.dyn_monitoring_v_warn);
+  per_mille("dyn_monitoring_v_err", "P-AXIS-00440", "v_max", axis.dyn_monitoring_v_err);
   if (axis.dyn_monitoring_a_err < axis.dyn_monitoring_a_warn)
     throw ConfigError(at + ": P-AXIS-00442 dyn_monitoring_a_err must be >= P-AXIS-00441 dyn_monitoring_a_warn");
-  if (axis.dyn_monitoring_v_warn < 1000)
-    throw ConfigError(at + ": P-AXIS-00439 dyn_monitoring_v_warn must be >= 1000 (limit = v_max * value / 1000)");
   if (axis.dyn_monitoring_v_err < axis.dyn_monitoring_v_warn)
     throw ConfigError(at + ": P-AXIS-00440 dyn_monitoring_v_err must be >= P-AXIS-00439 dyn_monitoring_v_warn");
 
-  if (m.get("slep_max", axis.slep_max, positive)) {
+  if (m.get("slep_max", axis.slep_max, units(range::following_error))) {
     axis.slep_min = axis.slep_max;
-    m.get("slep_min", axis.slep_min, positive);
+    m.get("slep_min", axis.slep_min, units(range::following_error));
     axis.following_error_monitoring = 4;
   } else if (m.has("slep_min")) {  // would be ignored: monitoring needs slep_max
     throw ConfigError(at + ": P-AXIS-00169 slep_min needs P-AXIS-00168 slep_max");
@@ -85,11 +102,11 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
     if (!m.has("swe_neg") || !m.has("swe_pos"))
       throw ConfigError(at + ": software limit switches need both P-AXIS-00177 swe_neg and P-AXIS-00178 swe_pos");
     axis.software_limits = true;
-    axis.swe_neg = m.number("swe_neg");
-    axis.swe_pos = m.number("swe_pos");
+    axis.swe_neg = m.number("swe_neg", units(range::position));
+    axis.swe_pos = m.number("swe_pos", units(range::position));
     if (!(axis.swe_neg < axis.swe_pos))
       throw ConfigError(at + ": P-AXIS-00177 swe_neg must be below P-AXIS-00178 swe_pos");
-    m.get("swe_toleranz", axis.swe_toleranz, non_negative);
+    m.get("swe_toleranz", axis.swe_toleranz, units(range::limit_switch_tolerance));
   } else if (m.has("swe_toleranz")) {  // would be ignored: nothing to widen
     throw ConfigError(at + ": P-AXIS-00179 swe_toleranz needs P-AXIS-00177 swe_neg and P-AXIS-00178 swe_pos");
   }
@@ -102,10 +119,12 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
     if (axis.software_limits)
       throw ConfigError(at + ": a modulo axis has no software limit switches (P-AXIS-00177 / 00178)");
     axis.modulo = true;
-    axis.modulo_lower = m.number("modulo_lower");
-    axis.modulo_upper = m.number("modulo_upper");
+    axis.modulo_lower = m.number("modulo_lower", units(range::position));
+    axis.modulo_upper = m.number("modulo_upper", units(range::position));
     if (!(axis.modulo_lower < axis.modulo_upper))
       throw ConfigError(at + ": modulo_lower must be below modulo_upper");
+    if (axis.modulo_range() < range::min_modulo_range)
+      throw ConfigError(at + ": modulo_upper - modulo_lower must be at least 1 deg (a revolution: 360)");
   }
   return axis;
 }
@@ -115,10 +134,13 @@ MachineConfig read_machine(const YAML::Node& node) {
   MachineConfig config;
   config.name = "machine";
   m.get("name", config.name);
-  m.get("cycle_time_us", config.cycle_time_us, 100, 100000);
-  m.get("override_max_percent", config.override_max_percent, 100, 200);
-  m.get("fb_storage_size", config.fb_storage_size, 0);  // P-STUP-00033, bytes
-  m.get("plc_watchdog_cycles", config.plc_watchdog_cycles, 1, 1000000);
+  namespace range = machine_ranges;
+  m.get("cycle_time_us", config.cycle_time_us, range::cycle_time_us.min, range::cycle_time_us.max);
+  m.get("override_max_percent", config.override_max_percent, range::override_max_percent.min,
+        range::override_max_percent.max);
+  m.get("fb_storage_size", config.fb_storage_size, range::fb_storage_size.min,
+        range::fb_storage_size.max);  // P-STUP-00033, bytes
+  m.get("plc_watchdog_cycles", config.plc_watchdog_cycles, range::watchdog_cycles.min, range::watchdog_cycles.max);
   if (m.has("m_pre_outp")) {
     const YAML::Node pre_output = m["m_pre_outp"];
     if (!pre_output.IsMap()) throw ConfigError(m.path("m_pre_outp") + ": must map M numbers to 0.1 um");
@@ -126,7 +148,7 @@ MachineConfig read_machine(const YAML::Node& node) {
       const int nr = static_cast<int>(config_whole(item.first, m.path("m_pre_outp"), 0, int32_max));
       const std::string at = index_path(m.path("m_pre_outp"), nr);
       if (config.m_pre_output_mm.count(nr)) throw ConfigError(at + ": given twice");
-      config.m_pre_output_mm[nr] = config_number(item.second, at, non_negative) / hli_units_per_mm;
+      config.m_pre_output_mm[nr] = config_number(item.second, at, range::pre_output_path) / hli_units_per_mm;
     }
   }
   // The lift function (TF5200_lift_function.txt 4.2): its method, and
@@ -137,7 +159,7 @@ MachineConfig read_machine(const YAML::Node& node) {
   m.get("enable_time_based_lift", lists.enable_time_based_lift, 0, 1);  // P-CHAN-00345
   config.lift_method = resolve_lift_method(lists, "machine");
   int64_t lift_min_dist = 0;
-  m.get("lift_min_dist", lift_min_dist, 0, 4294967295);
+  m.get("lift_min_dist", lift_min_dist, range::lift_min_dist.min, range::lift_min_dist.max);
   config.lift_min_dist_mm = static_cast<double>(lift_min_dist) / hli_units_per_mm;
   const YAML::Node axes = m["axes"];
   if (!axes || !axes.IsSequence() || axes.size() == 0) throw ConfigError("machine.axes: must be a non-empty list");

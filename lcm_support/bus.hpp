@@ -6,20 +6,33 @@
 // know only this interface, so both runs produce the same messages.
 #include <lcm/lcm-cpp.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
+
+#include "traffic.hpp"
 
 namespace hil::lcm_support {
 
-// An LCM message's bytes, as LCM sends them.
+template <typename Message, typename = void>
+struct has_mac : std::false_type {};
+template <typename Message>
+struct has_mac<Message, std::void_t<decltype(std::declval<Message>().mac)>> : std::true_type {};
+
+// An LCM message's bytes, as LCM sends them. A rig channel's type ends
+// with its MAC (RIG-12): encoded as 0, whatever the field holds, until the
+// bus of a run's process signs it (authenticated_bus.hpp).
 template <typename Message>
 std::vector<uint8_t> encode(const Message& message) {
   std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
   message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  if constexpr (has_mac<Message>::value) std::fill(bytes.end() - sizeof(int64_t), bytes.end(), uint8_t{0});
   return bytes;
 }
 
@@ -38,6 +51,10 @@ class Bus {
   // Hands on what has arrived, waiting at most `timeout_ms` for it: > 0 if
   // a message was handled, 0 if none came, < 0 if receiving failed.
   virtual int handle_timeout(int timeout_ms) = 0;
+  // What the bus itself refused before any subscriber saw it (RIG-9,
+  // RIG-12: unauthenticated messages, fragments beyond its reassembly
+  // memory), per channel; a node adds it to what it reports at its RUN_END.
+  virtual traffic::Ledger refused() const { return {}; }
 
   template <typename Message>
   void publish(const std::string& channel, const Message& message) {

@@ -30,6 +30,7 @@ class FaultInjectingBus : public Bus {
   }
   void unsubscribe(int id) override { inner_.unsubscribe(id); }
   int handle_timeout(int timeout_ms) override { return inner_.handle_timeout(timeout_ms); }
+  traffic::Ledger refused() const override { return inner_.refused(); }
 
   bool killed() const { return killed_; }
 

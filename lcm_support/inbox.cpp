@@ -90,6 +90,8 @@ std::vector<hil::traffic_count_t> to_message(const traffic::Ledger& ledger) {
     m.foreign_run = r.foreign_run;
     m.wrong_cycle = r.wrong_cycle;
     m.undecodable = r.undecodable;
+    m.unauthenticated = r.unauthenticated;
+    m.oversized = r.oversized;
     out.push_back(m);
   }
   return out;
@@ -97,7 +99,7 @@ std::vector<hil::traffic_count_t> to_message(const traffic::Ledger& ledger) {
 
 traffic::Ledger from_message(const std::vector<hil::traffic_count_t>& counts) {
   traffic::Ledger ledger;
-  for (const auto& m : counts) ledger.add(m.channel, {m.foreign_run, m.wrong_cycle, m.undecodable});
+  for (const auto& m : counts) ledger.add(m.channel, {m.foreign_run, m.wrong_cycle, m.undecodable, m.unauthenticated, m.oversized});
   return ledger;
 }
 

@@ -16,6 +16,7 @@
 
 #include "bus.hpp"
 #include "traffic.hpp"
+#include "untrusted_decode.hpp"
 
 namespace hil::lcm_support {
 
@@ -24,9 +25,11 @@ namespace hil::lcm_support {
 // uint32_t). Nothing in such a buffer may be used.
 inline bool framed(const lcm::ReceiveBuffer& rbuf) { return rbuf.data_size <= LCM_MAX_MESSAGE_SIZE; }
 
+// Bytes from the network: a string or array length that lcm-gen's decoder
+// would follow past the buffer is undecodable, not a crash (untrusted_decode.hpp).
 template <typename Message>
 bool decode(const void* data, uint32_t size, Message& message) {
-  return message.decode(data, 0, static_cast<int>(size)) == static_cast<int>(size);
+  return decode_untrusted(data, size, message);
 }
 
 // The run and cycle a message on a rig channel names.
@@ -68,7 +71,12 @@ class Inbox {
   // Messages taken so far: what tells a node its run is still alive (another
   // rig's traffic on the port must not).
   int64_t taken() const { return taken_; }
-  const traffic::Ledger& ledger() const { return ledger_; }
+  // What it refused, and what its bus refused before (Bus::refused).
+  traffic::Ledger ledger() const {
+    traffic::Ledger all = bus_.refused();
+    all.add(ledger_);
+    return all;
+  }
 
  private:
   void route(const std::string& channel, int queue_capacity, Bus::Handler handle);

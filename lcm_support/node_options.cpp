@@ -4,6 +4,9 @@
 
 #include <exception>
 
+#include "authenticated_bus.hpp"
+#include "run_secret.hpp"
+
 namespace hil::lcm_support {
 
 void add_node_options(CLI::App& app, NodeOptions& options) {
@@ -15,6 +18,22 @@ void add_node_options(CLI::App& app, NodeOptions& options) {
   app.add_option("--run-id", options.run_id, "the run's id: every message carries it, others are refused")
       ->required()
       ->check(CLI::PositiveNumber);
+  add_key_file_option(app, options.key_file);
+}
+
+CLI::Option* add_key_file_option(CLI::App& app, std::string& key_file) {
+  return app
+      .add_option("--key-file", key_file,
+                  "the run's secret (RIG-12; hil run writes run.key into the run folder): every message sent is signed "
+                  "with it, every message of the run without its MAC refused")
+      ->check(CLI::ExistingFile);
+}
+
+std::unique_ptr<Bus> run_bus(const std::string& url, const std::string& key_file, int64_t run_id,
+                             UdpmReceive receive) {
+  std::unique_ptr<Bus> bus = node_bus(url, receive);
+  if (key_file.empty()) return bus;
+  return std::make_unique<AuthenticatedBus>(std::move(bus), RunSecret::read(key_file), run_id);
 }
 
 int guarded_main(const std::string& node_name, const std::function<int()>& body) {

@@ -1,5 +1,7 @@
 #include "participant.hpp"
 
+#include <unistd.h>
+
 #include <hil/participant_t.hpp>
 
 #include <stdexcept>
@@ -16,6 +18,11 @@ Participant::Participant(Inbox& inbox, std::string name) : inbox_(inbox), name_(
     return true;
   });
   inbox_.on<hil::participant_t>(channels::participant, [this](const hil::participant_t& m, const lcm::ReceiveBuffer&) {
+    if (m.name == "cnc") ++cnc_signs_;
+    if (m.name == "logger" && m.phase == hil::participant_t::PHASE_ALIVE && m.cycle > logger_cycle_) {
+      logger_cycle_ = m.cycle;
+      ++cnc_signs_;
+    }
     if (m.name == "cnc" && m.phase == hil::participant_t::PHASE_READY) cnc_up_ = true;
     if (m.name == "cnc" && m.phase == hil::participant_t::PHASE_RUN_END) {
       ended_ = true;
@@ -36,6 +43,7 @@ void Participant::announce(int8_t phase, int64_t cycle, int32_t verdicts) {
   if (phase == hil::participant_t::PHASE_RUN_END) m.rejected = to_message(inbox_.ledger());
   m.n_rejected = static_cast<int16_t>(m.rejected.size());
   m.n_lost = 0;
+  m.pid = static_cast<int32_t>(::getpid());
   inbox_.bus().publish(channels::participant, m);
 }
 
@@ -68,14 +76,15 @@ bool Participant::wait_for_start(std::chrono::milliseconds timeout) {
   return true;
 }
 
-bool Participant::serve_until_end(std::chrono::milliseconds silence) {
+bool Participant::serve_until_end(std::chrono::milliseconds silence, const std::function<int64_t()>& cnc_cycle) {
   using clock = std::chrono::steady_clock;
   auto last = clock::now();
-  int64_t taken = inbox_.taken();
+  int64_t signs = cnc_signs_, cycle = cnc_cycle();
   while (!ended_) {
     if (inbox_.bus().handle_timeout(100) < 0) throw std::runtime_error("LCM receive failed");
-    if (inbox_.taken() != taken) {
-      taken = inbox_.taken();
+    if (cnc_signs_ != signs || cnc_cycle() != cycle) {
+      signs = cnc_signs_;
+      cycle = cnc_cycle();
       last = clock::now();
     } else if (clock::now() - last > silence) {
       return false;

@@ -7,11 +7,18 @@
 #include <hil/run_manifest_t.hpp>
 
 #include <chrono>
+#include <cstdint>
+#include <functional>
 #include <string>
 
 #include "inbox.hpp"
 
 namespace hil::lcm_support {
+
+// How long a node goes on without a sign of the CNC before it takes the CNC
+// to be gone, says so and exits 2 (docs/RELIABILITY.md); hil run gives the
+// nodes that long, and a margin, to end after the CNC's process has ended.
+inline constexpr std::chrono::seconds cnc_silence{10};
 
 class Participant {
  public:
@@ -21,9 +28,15 @@ class Participant {
   void announce_ready();
   // Announces READY until the CNC's manifest arrives; false after `timeout`.
   bool wait_for_start(std::chrono::milliseconds timeout);
-  // Handles messages until the CNC's RUN_END; false if `silence` passes
-  // without a message of this run.
-  bool serve_until_end(std::chrono::milliseconds silence);
+  // Handles messages until the CNC's RUN_END; false once the CNC has given
+  // no sign of life for `silence`. A sign is a message from the CNC — its
+  // announcements, or a cycle the node took from it (`cnc_cycle`, the
+  // node's last cycle, advanced) — or a logger heartbeat whose recorded
+  // cycle advanced (the CNC's progress, when the scenario's faults drop
+  // this node's cycle messages). A heartbeat alone is no sign: it goes on
+  // while the logger itself waits out a dead CNC's silence, and kept every
+  // node serving twice as long (issue 33).
+  bool serve_until_end(std::chrono::milliseconds silence, const std::function<int64_t()>& cnc_cycle);
   // Announces this node's own end with what its inbox refused (and, from
   // plc_sim, how many verdicts it published); the logger waits for it.
   void announce_end(int64_t cycle, int32_t verdicts = 0);
@@ -45,6 +58,8 @@ class Participant {
   bool cnc_up_ = false;  // the CNC announced READY: announce again now
   bool ended_ = false;
   int64_t end_cycle_ = 0;
+  int64_t cnc_signs_ = 0;      // messages from the CNC, and logger heartbeats that advanced
+  int64_t logger_cycle_ = -1;  // the recorded cycle of the last such heartbeat
   hil::run_manifest_t manifest_;
 };
 

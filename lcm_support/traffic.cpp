@@ -6,6 +6,8 @@ Refused& Refused::operator+=(const Refused& other) {
   foreign_run += other.foreign_run;
   wrong_cycle += other.wrong_cycle;
   undecodable += other.undecodable;
+  unauthenticated += other.unauthenticated;
+  oversized += other.oversized;
   return *this;
 }
 
@@ -21,6 +23,8 @@ void Ledger::refuse(const std::string& channel, Refusal why) {
     case Refusal::foreign_run: ++r.foreign_run; break;
     case Refusal::wrong_cycle: ++r.wrong_cycle; break;
     case Refusal::undecodable: ++r.undecodable; break;
+    case Refusal::unauthenticated: ++r.unauthenticated; break;
+    case Refusal::oversized: ++r.oversized; break;
   }
 }
 
@@ -48,6 +52,8 @@ std::string Ledger::describe() const {
     part(r.foreign_run, "foreign run");
     part(r.wrong_cycle, "wrong cycle");
     part(r.undecodable, "undecodable");
+    part(r.unauthenticated, "unauthenticated");
+    part(r.oversized, "oversized");
     out += (out.empty() ? "" : "; ") + channel + ": " + counts;
   }
   return out.empty() ? "none" : out;

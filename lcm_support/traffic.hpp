@@ -12,17 +12,23 @@ namespace hil::traffic {
 enum class Refusal {
   foreign_run,  // another run's message (another rig on the port, a replay)
   wrong_cycle,  // this run's, but not the answer to the cycle waited for
-  undecodable,  // not the channel's type, truncated, or a datagram LCM could not frame
+  undecodable,      // not the channel's type, truncated, or a datagram LCM could not frame
+  unauthenticated,  // this run's id but not the run's MAC (RIG-12): not from one of its processes
+  oversized,        // a fragment of a message beyond what the node reassembles (memory cap)
 };
 
 struct Refused {
   int64_t foreign_run = 0;
   int64_t wrong_cycle = 0;
   int64_t undecodable = 0;
+  int64_t unauthenticated = 0;
+  int64_t oversized = 0;
 
-  int64_t total() const { return foreign_run + wrong_cycle + undecodable; }
-  // A run passes with another run's traffic told apart, never with its own
-  // traffic unaccounted for or with bytes nobody can read.
+  int64_t total() const { return foreign_run + wrong_cycle + undecodable + unauthenticated + oversized; }
+  // A run passes with another run's traffic told apart, and forged or
+  // oversized traffic refused (what the run's own processes sent is then
+  // still all there, or the log is incomplete), never with its own traffic
+  // unaccounted for or with bytes nobody can read.
   bool fails_run() const { return wrong_cycle + undecodable > 0; }
   Refused& operator+=(const Refused& other);
 };

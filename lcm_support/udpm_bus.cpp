@@ -10,25 +10,23 @@
 #include <cerrno>
 #include <cstring>
 #include <deque>
-#include <map>
 #include <stdexcept>
 #include <thread>
-#include <tuple>
+#include <unordered_set>
 
 #include "channels.hpp"
+#include "fragment_reassembly.hpp"
 #include "subscribers.hpp"
 
 namespace hil::lcm_support {
 namespace {
 
 constexpr uint32_t lcm_short = 0x4c433032;  // "LC02": one datagram
-constexpr uint32_t lcm_long = 0x4c433033;   // "LC03": a fragment
-constexpr size_t short_header = 8, long_header = 20, max_channel = 63;
+constexpr size_t short_header = 8, max_channel = 63;
 constexpr size_t lcm_short_max_payload = 65499;  // name, NUL and data (LCM_SHORT_MESSAGE_MAX_SIZE)
 constexpr uint32_t udp_header = 8;  // a UDP socket's filter sees the UDP header first
 
 uint32_t be32(const uint8_t* p) { return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3]; }
-uint16_t be16(const uint8_t* p) { return static_cast<uint16_t>(p[0] << 8 | p[1]); }
 
 struct Group {
   in_addr address{};
@@ -157,17 +155,14 @@ class UdpmBus : public Bus {
     return 1;
   }
 
+  traffic::Ledger refused() const override { return reassembly_.refused(); }
+
  private:
   struct Message {
     std::string channel;
     std::vector<uint8_t> bytes;
     int64_t recv_utime;
     bool malformed = false;  // no channel name: only for subscribers of every channel
-  };
-  struct Fragments {
-    std::string channel;
-    std::vector<uint8_t> bytes;
-    uint16_t remaining = 0;
   };
 
   void open_sender(const Group& group) {
@@ -210,6 +205,8 @@ class UdpmBus : public Bus {
   void refilter() {
     bool every = false;
     const std::vector<std::string> names = subscribers_.names(every);
+    every_ = every;
+    named_ = {names.begin(), names.end()};
     // A subscriber of every channel gets every datagram, and none is dropped
     // by a filter: the logger counts the kernel's drops at its socket, and a
     // filter's count there too.
@@ -254,11 +251,13 @@ class UdpmBus : public Bus {
       flags = MSG_DONTWAIT;
       const int64_t now = wall_clock_us();
       for (int i = 0; i < n; ++i) take(buffers_[i].data(), headers[i].msg_len, from[i], now);
+      reassembly_.drop_stale(now);  // partial messages no fragment came for, even if no fragment comes
       if (n < static_cast<int>(batch)) return 0;
     }
   }
 
-  // LCM's datagram formats (lcm/udpm_util.h of LCM 1.3.1).
+  // LCM's datagram formats (lcm/udpm_util.h of LCM 1.3.1); a fragment goes
+  // to the reassembly, which holds only what arrived, within its caps.
   void take(const uint8_t* d, size_t size, const sockaddr_in& from, int64_t now) {
     if (size < short_header) return;
     const uint32_t magic = be32(d);
@@ -270,28 +269,14 @@ class UdpmBus : public Bus {
                           std::vector<uint8_t>(nul + 1, d + size), now});
       return;
     }
-    if (magic != lcm_long || size < long_header) return;
-    const uint32_t seqno = be32(d + 4), total = be32(d + 8), offset = be32(d + 12);
-    const uint16_t number = be16(d + 16), count = be16(d + 18);
-    if (total > LCM_MAX_MESSAGE_SIZE || count == 0 || number >= count) return;
-    const auto key = std::make_tuple(from.sin_addr.s_addr, from.sin_port, seqno);
-    const uint8_t* data = d + long_header;
-    size_t length = size - long_header;
-    if (number == 0) {
-      const auto* nul = static_cast<const uint8_t*>(std::memchr(data, 0, std::min(length, max_channel + 1)));
-      if (!nul) return;
-      if (fragments_.size() >= 16) fragments_.erase(fragments_.begin());  // bounded: the oldest is lost
-      Fragments& f = fragments_[key];
-      f = {std::string(reinterpret_cast<const char*>(data), nul - data), std::vector<uint8_t>(total), count};
-      length -= static_cast<size_t>(nul + 1 - data);
-      data = nul + 1;
-    }
-    const auto it = fragments_.find(key);
-    if (it == fragments_.end() || offset > total || length > total - offset) return;
-    std::memcpy(it->second.bytes.data() + offset, data, length);
-    if (--it->second.remaining > 0) return;
-    pending_.push_back({std::move(it->second.channel), std::move(it->second.bytes), now});
-    fragments_.erase(it);
+    if (magic != lcm_fragment_magic) return;
+    if (auto m = reassembly_.take(d, size, {from.sin_addr.s_addr, from.sin_port}, now))
+      pending_.push_back({std::move(m->channel), std::move(m->bytes), now, !m->framed});
+  }
+
+  // Whether a message on `channel` has a subscriber here (as Subscribers hands it on).
+  bool wanted(const std::string& channel) const {
+    return every_ ? channel != channels::lcm_self_test : named_.count(channel) > 0;
   }
 
   lcm::LCM sender_;
@@ -304,7 +289,9 @@ class UdpmBus : public Bus {
   size_t queued_ = 0;
   Subscribers subscribers_;
   std::deque<Message> pending_;
-  std::map<std::tuple<in_addr_t, in_port_t, uint32_t>, Fragments> fragments_;
+  bool every_ = false;  // as subscribed (refilter)
+  std::unordered_set<std::string> named_;
+  FragmentReassembly reassembly_{[this](const std::string& channel) { return wanted(channel); }};
   std::vector<std::vector<uint8_t>> buffers_;
 };
 

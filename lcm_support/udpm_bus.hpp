@@ -6,7 +6,8 @@
 // not by LCM 1.3.1's read thread that hands each message on through a pipe
 // (two wake-ups a message). A kernel socket filter lets in only the channels
 // subscribed by name, so that a node is not woken for the messages of
-// others. Reads LCM's short and fragmented datagrams.
+// others. Reads LCM's short and fragmented datagrams (fragment_reassembly:
+// only what arrived is held, within caps; refused() counts what is not).
 #include <chrono>
 #include <cstdint>
 #include <memory>

@@ -10,7 +10,6 @@
 #include <hil/rt_stats_t.hpp>
 #include <hil/run_manifest_t.hpp>
 #include <hil/scenario_text_t.hpp>
-#include <lcm/lcm-cpp.hpp>
 
 #include <cctype>
 #include <cmath>
@@ -23,7 +22,9 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "event_log_reader.hpp"
 #include "hli.hpp"
+#include "untrusted_decode.hpp"
 
 namespace hil::logger {
 namespace {
@@ -99,6 +100,8 @@ void traffic(Row& r, const std::vector<hil::traffic_count_t>& counts) {
     r.integer(p + ".foreign_run", counts[i].foreign_run);
     r.integer(p + ".wrong_cycle", counts[i].wrong_cycle);
     r.integer(p + ".undecodable", counts[i].undecodable);
+    r.integer(p + ".unauthenticated", counts[i].unauthenticated);
+    r.integer(p + ".oversized", counts[i].oversized);
   }
 }
 
@@ -288,14 +291,14 @@ struct Kind {
   // events, statistics); the others (handshake, manifest, the logger's own
   // records) follow the wall clock.
   bool simulated_time;
-  bool (*columns)(const lcm::LogEvent& e, Row& row);  // false: not decodable as this type
+  bool (*columns)(const LogRecord& e, Row& row);  // false: not decodable as this type
 };
 
 template <typename Message>
 Kind kind(const char* type, bool simulated_time) {
-  return {type, Message::getHash(), simulated_time, [](const lcm::LogEvent& e, Row& row) {
+  return {type, Message::getHash(), simulated_time, [](const LogRecord& e, Row& row) {
             Message m{};  // decode fills it; {} quiets GCC, which cannot see that
-            if (m.decode(e.data, 0, e.datalen) != e.datalen) return false;
+            if (!lcm_support::decode_untrusted(e.data.data(), e.data.size(), m)) return false;
             columns(row, m);
             return true;
           }};
@@ -311,15 +314,15 @@ const std::vector<Kind>& kinds() {
   return all;
 }
 
-std::optional<int64_t> fingerprint(const lcm::LogEvent& e) {
-  if (e.datalen < 8) return std::nullopt;
-  const auto* b = static_cast<const uint8_t*>(e.data);
+std::optional<int64_t> fingerprint(const LogRecord& e) {
+  if (e.data.size() < 8) return std::nullopt;
+  const uint8_t* b = e.data.data();
   uint64_t h = 0;
   for (int i = 0; i < 8; ++i) h = h << 8 | b[i];  // LCM encodes it big-endian
   return static_cast<int64_t>(h);
 }
 
-const Kind* kind_of(const lcm::LogEvent& e) {
+const Kind* kind_of(const LogRecord& e) {
   const std::optional<int64_t> hash = fingerprint(e);
   for (const Kind& k : kinds())
     if (hash && *hash == k.hash) return &k;
@@ -333,21 +336,37 @@ struct Header {
   std::unordered_map<std::string, size_t> position;
   std::vector<std::string> last;  // the last row's names: most rows repeat them
 
+  // A name the header lacks goes right after the row's name before it (the
+  // front if none). One merge per row that brings new names, not an insert
+  // each: a row may bring thousands (a crafted array length).
   void add(const std::vector<std::string>& row) {
     if (row == last) return;
     last = row;
-    size_t next = 0;  // where a new name goes: after the row's previous name
+    std::unordered_map<size_t, std::vector<const std::string*>> after;  // header index + 1 -> new names
+    size_t anchor = 0;
     for (const std::string& name : row) {
-      if (const auto p = position.find(name); p != position.end()) {
-        next = p->second + 1;
-        continue;
-      }
-      names.insert(names.begin() + static_cast<std::ptrdiff_t>(next), name);
-      for (size_t i = next; i < names.size(); ++i) position[names[i]] = i;
-      ++next;
+      if (const auto p = position.find(name); p != position.end()) anchor = p->second + 1;
+      else if (position.emplace(name, 0).second) after[anchor].push_back(&name);
     }
+    if (after.empty()) return;
+    std::vector<std::string> merged;
+    for (size_t i = 0; i <= names.size(); ++i) {
+      if (const auto a = after.find(i); a != after.end())
+        for (const std::string* name : a->second) merged.push_back(*name);
+      if (i < names.size()) merged.push_back(std::move(names[i]));
+    }
+    names = std::move(merged);
+    for (size_t i = 0; i < names.size(); ++i) position[names[i]] = i;
   }
 };
+
+// No rig message has a tenth as many columns (hli_state_t: 4 per axis);
+// a row with more (an array length a crafted log sets to 32767) is left out,
+// else every row of its channel would carry its empty cells.
+constexpr size_t max_columns = 1024;
+// Files open at once, one per channel: below the usual limit of 1024
+// descriptors. A rig log has a dozen channels.
+constexpr size_t max_channels = 500;
 
 struct ChannelPass {
   const Kind* kind = nullptr;
@@ -359,25 +378,22 @@ struct ChannelPass {
 
 // The channel's name as a file name; another channel's file already named
 // so (channels that differ only in characters a file name cannot hold):
-// "_2", "_3" appended.
+// "_2", "_3" appended. At most 200 characters of it: a channel name may have
+// 999 (LCM's limit), a file name 255.
 std::string file_name(const std::string& channel, std::set<std::string>& taken) {
   std::string name;
-  for (const char c : channel) name += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
+  for (const char c : channel.substr(0, 200))
+    name += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
   if (name.empty()) name = "_";
   std::string file = name + ".csv";
   for (int n = 2; !taken.insert(file).second; ++n) file = name + "_" + std::to_string(n) + ".csv";
   return file;
 }
 
-std::unique_ptr<lcm::LogFile> open_log(const std::string& path) {
-  auto file = std::make_unique<lcm::LogFile>(path, "r");
-  if (!file->good()) throw std::runtime_error("cannot open LCM log " + path);
-  return file;
-}
-
-std::string seconds(int64_t us) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6f", static_cast<double>(us) * 1e-6);
+// Seconds from `start_us` to `us`: timestamps are the log's, any int64.
+std::string seconds_since(int64_t start_us, int64_t us) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.6f", (static_cast<double>(us) - static_cast<double>(start_us)) * 1e-6);
   return buf;
 }
 
@@ -397,8 +413,8 @@ CsvExport export_csv(const std::string& log_path, const std::string& dir) {
 
   // First pass: each channel's type and columns, the cycle time.
   {
-    auto file = open_log(log_path);
-    while (const lcm::LogEvent* e = file->readNextEvent()) {
+    EventLogReader file(log_path);
+    while (const LogRecord* e = file.next()) {
       ++result.messages;
       if (!start_us) start_us = e->timestamp;
       auto [entry, first] = channels.try_emplace(e->channel);
@@ -410,13 +426,14 @@ CsvExport export_csv(const std::string& log_path, const std::string& dir) {
       Row row(true);
       if (!k->columns(*e, row)) continue;
       c.kind = k;
-      c.header.add(row.names());
+      if (row.names().size() <= max_columns) c.header.add(row.names());
       if (!result.cycle_s && k->hash == hil::run_manifest_t::getHash()) {
-        hil::run_manifest_t m;
-        m.decode(e->data, 0, e->datalen);
-        if (m.cycle_us > 0) result.cycle_s = m.cycle_us * 1e-6;
+        hil::run_manifest_t m{};
+        if (lcm_support::decode_untrusted(e->data.data(), e->data.size(), m) && m.cycle_us > 0)
+          result.cycle_s = m.cycle_us * 1e-6;
       }
     }
+    result.damage = file.damage().describe();
   }
   if (result.messages == 0) throw std::runtime_error(log_path + " is not an LCM event log (no event found)");
 
@@ -426,6 +443,11 @@ CsvExport export_csv(const std::string& log_path, const std::string& dir) {
     ChannelPass& c = channels[channel];
     if (!c.kind) {
       result.unknown.emplace_back(channel, c.messages);
+      continue;
+    }
+    if (result.channels.size() == max_channels) {
+      c.kind = nullptr;  // not written in the second pass
+      result.too_many.emplace_back(channel, c.messages);
       continue;
     }
     CsvChannel out;
@@ -444,9 +466,9 @@ CsvExport export_csv(const std::string& log_path, const std::string& dir) {
 
   // Second pass: the rows, each cell under its column, empty where a
   // message lacks it.
-  auto file = open_log(log_path);
+  EventLogReader file(log_path);
   std::string line;
-  while (const lcm::LogEvent* e = file->readNextEvent()) {
+  while (const LogRecord* e = file.next()) {
     ChannelPass& c = channels[e->channel];
     if (!c.kind) continue;
     CsvChannel& out = result.channels[c.index];
@@ -455,13 +477,17 @@ CsvExport export_csv(const std::string& log_path, const std::string& dir) {
       ++out.skipped;
       continue;
     }
+    if (row.names().size() > max_columns) {
+      ++out.too_wide;
+      continue;
+    }
     line.clear();
     if (out.simulated_time) {
       char t[32];
       std::snprintf(t, sizeof t, "%.15g,", static_cast<double>(row.cycle) * *result.cycle_s);
       line += t;
     }
-    line += seconds(e->timestamp - *start_us);
+    line += seconds_since(*start_us, e->timestamp);
     size_t k = 0;
     for (const std::string& name : c.header.names) {
       line += ',';

@@ -18,19 +18,24 @@ struct CsvChannel {
   bool simulated_time = false;  // first column t_s = cycle * cycle time; else log_t_s only
   int64_t rows = 0;
   int64_t skipped = 0;        // messages on it not decodable as its type
+  int64_t too_wide = 0;       // messages with more columns than any rig message (an array length beyond reason)
 };
 
 struct CsvExport {
   std::vector<CsvChannel> channels;  // in the order of their first message
   // Channels none of whose messages is a type this build knows: not exported.
   std::vector<std::pair<std::string, int64_t>> unknown;  // channel, messages
+  // Channels beyond the most one export writes (500; a rig log has a dozen).
+  std::vector<std::pair<std::string, int64_t>> too_many;  // channel, messages
   std::optional<double> cycle_s;     // from the first HIL_MANIFEST; none: no t_s column anywhere
   int64_t messages = 0;
+  std::string damage;  // where the file is not whole records (LogDamage::describe), "" if it is
 };
 
 // Writes <dir>/<channel>.csv for every channel of `log_path` whose type is
 // known. Throws std::runtime_error if the file cannot be read or is not an
-// LCM event log (no event in it).
+// LCM event log (no event in it). A damaged log is exported as far as its
+// records are whole (`damage` says where it is not).
 CsvExport export_csv(const std::string& log_path, const std::string& dir);
 
 // A text as an RFC 4180 field: always quoted, quotes doubled.

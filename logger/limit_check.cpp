@@ -5,6 +5,15 @@
 #include <limits>
 
 namespace hil::logger {
+namespace {
+
+// `cycle` - `back`, wrapping: a log's cycles may be any int64 (a crafted
+// one's INT64_MIN), where signed arithmetic would overflow.
+int64_t cycle_before(int64_t cycle, int64_t back) {
+  return static_cast<int64_t>(static_cast<uint64_t>(cycle) - static_cast<uint64_t>(back));
+}
+
+}  // namespace
 
 LimitChecker::LimitChecker(const MachineConfig& machine)
     : machine_(machine), setpoints_(machine.axes.size()), lift_active_(machine.axes.size()),
@@ -67,7 +76,7 @@ void LimitChecker::record(std::vector<Violation>& out, double value, double limi
   for (size_t back = 0; back < std::min<size_t>(out.size(), 6); ++back) {
     Violation& v = out[out.size() - 1 - back];
     if (v.axis != axis || v.quantity != quantity) continue;
-    if (std::llround(v.end_time_s / machine_.cycle_time_s()) + 1 != cycle) break;
+    if (std::round(v.end_time_s / machine_.cycle_time_s()) + 1 != static_cast<double>(cycle)) break;
     v.end_time_s = t;
     ++v.cycles;
     if (std::abs(value) > std::abs(v.value)) {
@@ -110,7 +119,7 @@ CheckReport LimitChecker::finish() const {
   // cycle is unknown: then no constant velocity is shown).
   std::unordered_set<int64_t> feed_changes;
   for (const auto& [cycle, v] : path_velocity_) {
-    const auto before = path_velocity_.find(cycle - 1);
+    const auto before = path_velocity_.find(cycle_before(cycle, 1));
     if (before == path_velocity_.end() || !(std::abs(v - before->second) <= 1e-9 * (1 + std::abs(v))))
       feed_changes.insert(cycle);
   }
@@ -133,7 +142,7 @@ CheckReport LimitChecker::finish() const {
     auto spans = [](const std::unordered_set<int64_t>& cycles, int64_t cycle, int back) {
       if (cycles.empty()) return false;
       for (int b = 0; b <= back; ++b)
-        if (cycles.count(cycle - b)) return true;
+        if (cycles.count(cycle_before(cycle, b))) return true;
       return false;
     };
     const std::unordered_set<int64_t>& lift = lift_active_[i];
@@ -150,7 +159,7 @@ CheckReport LimitChecker::finish() const {
         run = 0;
         continue;
       }
-      if (run == 0 || k == 0 || t.cycle[k] != t.cycle[k - 1] + 1) {
+      if (run == 0 || k == 0 || cycle_before(t.cycle[k], 1) != t.cycle[k - 1] || t.cycle[k - 1] == INT64_MAX) {
         run = 1;
         continue;
       }

@@ -10,18 +10,20 @@
 #include <hil/rt_stats_t.hpp>
 #include <hil/run_manifest_t.hpp>
 #include <hil/scenario_text_t.hpp>
-#include <lcm/lcm-cpp.hpp>
 
 #include <algorithm>
-#include <filesystem>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
 #include "channels.hpp"
 #include "config_error.hpp"
+#include "event_log_reader.hpp"
 #include "inbox.hpp"
 #include "messages.hpp"
 #include "run_identity.hpp"
+#include "run_secret.hpp"
+#include "untrusted_decode.hpp"
 
 namespace hil::logger {
 namespace {
@@ -30,23 +32,30 @@ namespace {
 constexpr size_t run_id_end = 16;
 
 template <typename T>
-bool decode(const lcm::LogEvent& e, T& msg) {
-  return msg.decode(e.data, 0, e.datalen) == e.datalen;
+bool decode(const LogRecord& e, T& msg) {
+  return lcm_support::decode_untrusted(e.data.data(), e.data.size(), msg);
+}
+
+// A node's RUN_END adds to what it refused; the log's own count ("log") and
+// the logger's seal ("logger") are no node's to replace.
+void add_refused(traffic::Ledger& to, const traffic::Ledger& from) {
+  for (const auto& [channel, counts] : from.by_channel()) to.add(channel, counts);
 }
 
 }  // namespace
 
 RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report) {
-  lcm::LogFile file(path, "r");
-  if (!file.good()) throw std::runtime_error("cannot open LCM log " + path);
+  EventLogReader file(path);
   RunLog log;
   LogFacts& f = log.facts;
   traffic::Ledger& in_log = f.refused["log"];
   std::unique_ptr<LimitChecker> checker;
   std::optional<int64_t> run;  // the run of the first manifest
-  while (const lcm::LogEvent* e = file.readNextEvent()) {
+  while (const LogRecord* e = file.next()) {
     const std::string& ch = e->channel;
     ++log.messages_per_channel[ch];
+    if (f.sealed) ++f.records_after_seal;
+    else if (ch != channels::log_end) ++f.records_before_seal;
     // Decodes; true if the message is this run's (counted if not).
     auto of_run = [&](auto& m) {
       if (!decode(*e, m)) {
@@ -83,7 +92,8 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       try {
         log.scenario = scenario_from_text(m.yaml, m.nc_program);
       } catch (const std::exception& ex) {
-        throw std::runtime_error(path + ": HIL_SCENARIO does not hold a valid scenario: " + ex.what());
+        f.unreadable.push_back(std::string("HIL_SCENARIO does not hold a valid scenario: ") + ex.what());
+        continue;
       }
       f.scenario = true;
       f.realtime = log.scenario->realtime;
@@ -120,10 +130,13 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
     } else if (ch == channels::log_end) {
       hil::log_summary_t m;
       if (!of_run(m)) continue;
+      if (f.sealed) continue;  // a second seal: counted above, after the first
       f.sealed = true;
       f.logger_missing = m.missing;
       f.logger_socket_drops = m.socket_drops;
       f.refused["logger"] = lcm_support::from_message(m.rejected);
+      f.seal_recorded = m.recorded;
+      f.seal_cycle = m.cycle;
     } else if (ch == channels::event) {
       hil::event_t m;
       if (!of_run(m)) continue;
@@ -138,7 +151,8 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       hil::hli_state_t m;
       if (!of_run(m)) continue;
       lock_step(m.cycle);
-      log.last_cycle = std::max(log.last_cycle, m.cycle);
+      // At most INT64_MAX - 1: reports print last_cycle + 1 cycles.
+      log.last_cycle = std::max(log.last_cycle, std::min(m.cycle, std::numeric_limits<int64_t>::max() - 1));
       log.hli.cycle.push_back(m.cycle);
       log.hli.path_velocity.push_back(m.path_velocity);
       log.hli.dist_prog_start_mm.push_back(m.dist_prog_start / hli_units_per_mm);
@@ -159,7 +173,7 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       hil::participant_t m;
       if (!of_run(m) || m.phase != hil::participant_t::PHASE_RUN_END) continue;
       f.ended.insert(m.name);
-      if (!m.rejected.empty()) f.refused[m.name] = lcm_support::from_message(m.rejected);
+      if (!m.rejected.empty()) add_refused(f.refused[m.name], lcm_support::from_message(m.rejected));
       if (m.name == "plc_sim") f.verdicts_announced = m.verdicts;
       if (m.name != "cnc") continue;
       f.end_cycle = m.cycle;
@@ -193,32 +207,42 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       in_log.refuse(ch, traffic::Refusal::undecodable);  // no channel of the rig
     }
   }
-  if (log.messages_per_channel.empty() && std::filesystem::file_size(path) > 0)
+  if (file.records() == 0 && file.file_size() > 0)
     throw std::runtime_error(path + " is not an LCM event log (no event found)");
+  if (file.damage().any()) f.unreadable.push_back("the file is damaged: " + file.damage().describe());
   if (report && checker) *report = checker->finish();
   return log;
 }
 
 std::string compare_run_logs(const std::string& a, const std::string& b) {
-  auto load = [](const std::string& path) {
-    lcm::LogFile file(path, "r");
-    if (!file.good()) throw std::runtime_error("cannot open LCM log " + path);
+  // A damaged file differs from any log (its damage may hide a record).
+  std::string damaged;
+  auto load = [&damaged](const std::string& path) {
+    EventLogReader file(path);
     std::map<std::string, std::vector<std::string>> payloads;
-    while (const lcm::LogEvent* e = file.readNextEvent()) {
+    while (const LogRecord* e = file.next()) {
       // Participant announcements, the logger's seal and LCM's own self test
       // follow wall-clock timing, not the run.
       if (e->channel == channels::participant || e->channel == channels::log_end ||
           e->channel == channels::lcm_self_test)
         continue;
-      std::string bytes(static_cast<const char*>(e->data), e->datalen);
+      std::string bytes(e->data.begin(), e->data.end());
       // Every rig message begins with its type's 8-byte fingerprint and the
-      // run id (lcmtypes/): the one field two equal runs differ in.
-      if (bytes.size() >= run_id_end) std::fill(bytes.begin() + 8, bytes.begin() + run_id_end, '\0');
+      // run id and ends with the run's MAC (lcmtypes/): the fields two equal
+      // runs differ in.
+      if (bytes.size() >= run_id_end + lcm_support::RunSecret::mac_bytes) {
+        std::fill(bytes.begin() + 8, bytes.begin() + run_id_end, '\0');
+        std::fill(bytes.end() - lcm_support::RunSecret::mac_bytes, bytes.end(), '\0');
+      }
       payloads[e->channel].push_back(std::move(bytes));
     }
+    if (file.records() == 0 && file.file_size() > 0)
+      throw std::runtime_error(path + " is not an LCM event log (no event found)");
+    if (file.damage().any() && damaged.empty()) damaged = path + " is damaged: " + file.damage().describe();
     return payloads;
   };
   auto pa = load(a), pb = load(b);
+  if (!damaged.empty()) return damaged;
   // Events of one cycle come from several nodes in wall-clock order: compare
   // them as a set (each carries its cycle and source).
   std::sort(pa[channels::event].begin(), pa[channels::event].end());

@@ -69,7 +69,10 @@ struct RunLog {
 // Reads `path`: the run of its first manifest (messages of other runs are
 // counted and left out); feeds the axis traces into a LimitChecker built
 // from the scenario, if there is one. Throws std::runtime_error if the file
-// cannot be read as an LCM log.
+// cannot be opened or holds no LCM event at all; whatever else is wrong with
+// it (damaged records, undecodable messages, a scenario text that is none,
+// a RUN_END cycle beyond what it holds) lands in `facts`, so the verdict
+// fails it. What it allocates is bounded by the file's size.
 RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report = nullptr);
 
 // Compares two logs channel by channel, message by message, on the payload
@@ -77,7 +80,7 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report 
 // but for the run id, which differs from run to run. HIL_PARTICIPANT (the
 // handshake), HIL_LOG_END (the logger's seal) and LCM_SELF_TEST are left
 // out: they follow wall-clock order. Returns "" if identical, else the
-// first difference.
+// first difference; a damaged file is a difference. Throws as read_run_log.
 std::string compare_run_logs(const std::string& a, const std::string& b);
 
 }  // namespace hil::logger

@@ -34,6 +34,7 @@ std::vector<Run> forward_runs(const PathTrace& t, double tolerance_mm) {
   std::vector<Run> runs;
   for (size_t i = 0; i < t.dist_mm.size(); ++i) {
     const double d = t.dist_mm[i];
+    if (!std::isfinite(d)) continue;  // no distance: counted as not finite by the caller
     if (!runs.empty() && d < runs.back().dist) continue;
     if (!runs.empty() && d == runs.back().dist) {
       Run& r = runs.back();
@@ -61,11 +62,18 @@ SamePathResult compare_same_path(const PathTrace& reference, const PathTrace& va
   const std::vector<Run> runs = forward_runs(reference, tolerance_mm);
   for (double d : reference.dist_mm) r.reference_end_mm = std::max(r.reference_end_mm, d);
   for (double d : variant.dist_mm) r.variant_end_mm = std::max(r.variant_end_mm, d);
+  for (double d : reference.dist_mm) r.not_finite += std::isfinite(d) ? 0 : 1;
+  for (const auto& positions : reference.position)
+    for (double p : positions) r.not_finite += std::isfinite(p) ? 0 : 1;
 
   int64_t beyond = 0, before = 0;
   std::optional<double> first_beyond;
   for (size_t i = 0; i < variant.dist_mm.size(); ++i) {
     const double d = variant.dist_mm[i];
+    if (!std::isfinite(d)) {
+      ++r.not_finite;
+      continue;
+    }
     if (!(d > from_dist_mm)) continue;
     const auto k = std::lower_bound(runs.begin(), runs.end(), d, [](const Run& run, double v) { return run.dist < v; });
     // The reference's position at d: at sample `at`, or between `at` and `next` (by `f`).
@@ -97,6 +105,10 @@ SamePathResult compare_same_path(const PathTrace& reference, const PathTrace& va
       const double p0 = reference.position[ra][at], p1 = reference.position[ra][next];
       const double ref = p0 + (p1 - p0) * f;
       const double diff = difference(variant.position[va][i], ref, reference.modulo_range[ra]);
+      if (!std::isfinite(diff)) {  // never the worst: NaN compares false with every tolerance
+        ++r.not_finite;
+        continue;
+      }
       if (!r.worst || std::abs(diff) > std::abs(r.worst->difference_mm))
         r.worst = SamePathResult::Worst{variant.cycle[i], d, variant.axes[va], variant.position[va][i], ref, diff};
     }
@@ -106,6 +118,8 @@ SamePathResult compare_same_path(const PathTrace& reference, const PathTrace& va
   if (r.worst && std::abs(r.worst->difference_mm) > tolerance_mm)
     r.failures.push_back("a sample differs by more than " + num(tolerance_mm * 1000, 3) + " µm");
   if (r.compared == 0) r.failures.push_back("no sample was compared");
+  if (r.not_finite > 0)
+    r.failures.push_back(std::to_string(r.not_finite) + " position(s) or distance(s) not a finite number");
   if (r.variant_end_mm < r.reference_end_mm - tolerance_mm)
     r.failures.push_back("the variant ended at dist_prog_start " + num(r.variant_end_mm, 4) + " mm, the reference at " +
                          num(r.reference_end_mm, 4) + " mm: it did not run to the end");

@@ -24,6 +24,7 @@ struct SamePathResult {
   bool holds = false;
   int64_t compared = 0;  // samples of the variant compared on every axis
   int64_t skipped = 0;   // samples at an ambiguous reference distance
+  int64_t not_finite = 0;  // NaN or infinite positions and distances (in either trace): the path fails
   // The largest difference of a compared sample (over all axes).
   struct Worst {
     int64_t cycle = 0;  // the variant's

@@ -13,20 +13,28 @@ std::string list(const std::vector<std::string>& names) {
   return out;
 }
 
-// Each cycle 0 .. last once on a lock-step channel.
+// Each cycle 0 .. last once on a lock-step channel. Counted on the sorted
+// cycles the log holds, never on a table of cycles 0 .. last: `last` is what
+// a RUN_END says, and a forged one may say 10^12.
 void check_cycles(const std::string& channel, const std::vector<int64_t>& cycles, int64_t last,
                   std::vector<std::string>& problems) {
-  std::vector<bool> seen(static_cast<size_t>(last + 1), false);
-  int64_t wrong = 0, first_missing = -1, missing = 0;
-  for (const int64_t c : cycles) {
-    if (c < 0 || c > last || seen[static_cast<size_t>(c)]) ++wrong;
-    else seen[static_cast<size_t>(c)] = true;
-  }
-  for (int64_t c = 0; c <= last; ++c)
-    if (!seen[static_cast<size_t>(c)]) {
-      if (first_missing < 0) first_missing = c;
-      ++missing;
+  std::vector<int64_t> in_range;
+  int64_t wrong = 0;
+  for (const int64_t c : cycles)
+    if (c < 0 || c > last) ++wrong;
+    else in_range.push_back(c);
+  std::sort(in_range.begin(), in_range.end());
+  int64_t distinct = 0, first_missing = -1;
+  for (size_t i = 0; i < in_range.size(); ++i) {
+    if (i > 0 && in_range[i] == in_range[i - 1]) {
+      ++wrong;
+      continue;
     }
+    if (first_missing < 0 && in_range[i] != distinct) first_missing = distinct;
+    ++distinct;
+  }
+  const int64_t missing = last + 1 - distinct;
+  if (missing > 0 && first_missing < 0) first_missing = distinct;
   if (missing > 0)
     problems.push_back(channel + ": " + std::to_string(missing) + " of " + std::to_string(last + 1) +
                        " cycles missing (the first: " + std::to_string(first_missing) + ")");
@@ -34,6 +42,18 @@ void check_cycles(const std::string& channel, const std::vector<int64_t>& cycles
     problems.push_back(channel + ": " + std::to_string(wrong) + " message(s) of a wrong cycle (repeated, or outside 0.." +
                        std::to_string(last) + ")");
 }
+
+// The most cycles the log can show: the most messages on one lock-step channel.
+int64_t cycles_held(const LogFacts& f) {
+  size_t most = 0;
+  for (const auto& entry : f.lock_step) most = std::max(most, entry.second.size());
+  return static_cast<int64_t>(most);
+}
+
+// Room for the cycles planned faults take out of every lock-step channel
+// at once; beyond it a RUN_END's cycle is not the run's (and checking the
+// planned copies of each cycle up to it would take as long as it says).
+int64_t plausible_last_cycle(int64_t held) { return 2 * held + 1000; }
 
 // How often the log must hold each cycle 0 .. last of a channel the faults
 // act on: the senders' rules replayed (fault_plan.hpp).
@@ -101,7 +121,26 @@ std::vector<std::string> log_problems(const LogFacts& f) {
   if (f.logger_socket_drops > 0)
     p.push_back("the kernel dropped " + std::to_string(f.logger_socket_drops) +
                 " datagram(s) at the logger's socket (its receive buffer was full)");
-  if (f.end_cycle) {
+  for (const std::string& what : f.unreadable) p.push_back(what);
+  if (f.records_after_seal > 0)
+    p.push_back(std::to_string(f.records_after_seal) +
+                " record(s) after the logger's seal (HIL_LOG_END), which it writes last");
+  if (f.sealed && f.seal_recorded && *f.seal_recorded != f.records_before_seal)
+    p.push_back("the logger's seal counts " + std::to_string(*f.seal_recorded) +
+                " message(s) written before it, the log holds " + std::to_string(f.records_before_seal));
+  if (f.sealed && f.end_cycle && f.seal_cycle && *f.seal_cycle != *f.end_cycle)
+    p.push_back("the cnc's RUN_END names cycle " + std::to_string(*f.end_cycle) + ", the logger's seal cycle " +
+                std::to_string(*f.seal_cycle));
+  // The lock-step channels are checked up to a RUN_END cycle the log can
+  // hold: -1 (no cycle ran) .. a bound from what it holds.
+  const int64_t held = cycles_held(f);
+  const bool end_plausible = f.end_cycle && (f.lock_step.empty() || (*f.end_cycle >= -1 &&
+                                                                     *f.end_cycle <= plausible_last_cycle(held)));
+  if (f.end_cycle && !end_plausible)
+    p.push_back("the cnc's RUN_END names cycle " + std::to_string(*f.end_cycle) +
+                (*f.end_cycle < 0 ? std::string(", before the first (0)")
+                                  : ", beyond the " + std::to_string(held) + " cycles the log holds"));
+  if (end_plausible) {
     for (const auto& [channel, cycles] : f.lock_step) {
       if (f.realtime && is_answer_channel(channel)) continue;  // missing answers are counted in real time
       if (f.faults.touches_channel(channel)) check_planned_cycles(channel, cycles, *f.end_cycle, f.faults, p);

@@ -49,6 +49,15 @@ struct LogFacts {
   // exiting by SIGKILL are the faults' doing, not a broken run.
   FaultPlan faults;
 
+  // What of the log cannot be read (the file not whole records, a
+  // HIL_SCENARIO that is no scenario): the run it holds may be incomplete.
+  std::vector<std::string> unreadable;
+  // The logger's seal: the records it wrote before it (log_summary_t.recorded)
+  // and the cnc's end cycle it saw; and the records the log holds before and
+  // after it (it is the last). A log edited after the run differs here.
+  std::optional<int64_t> seal_recorded, seal_cycle;
+  int64_t records_before_seal = 0, records_after_seal = 0;
+
   int expectations = -1;               // the scenario's expectations (expect + expect_events), -1 unknown
   int verdict_pass = 0, verdict_fail = 0;  // plc_sim's verdict events (event_t.verdict)
   std::optional<int32_t> verdicts_announced;  // how many plc_sim says it published (its RUN_END)

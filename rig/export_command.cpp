@@ -24,13 +24,23 @@ int export_csv_command(const std::string& log, const std::string& dir) {
   for (const auto& c : result.channels) {
     std::cout << "  " << std::left << std::setw(static_cast<int>(width)) << std::filesystem::path(c.file).filename().string()
               << "  " << std::setw(16) << c.type << std::right << std::setw(9) << c.rows << " rows"
-              << (c.skipped ? ", " + std::to_string(c.skipped) + " undecodable message(s) left out" : "") << '\n';
+              << (c.skipped ? ", " + std::to_string(c.skipped) + " undecodable message(s) left out" : "")
+              << (c.too_wide ? ", " + std::to_string(c.too_wide) + " message(s) of more columns than any rig message left out"
+                             : "")
+              << '\n';
     skipped += c.skipped;
   }
   for (const auto& [channel, messages] : result.unknown)
     std::cout << "not exported: " << channel << " (" << messages << " message(s) of a type this build does not know)\n";
+  for (const auto& [channel, messages] : result.too_many)
+    std::cout << "not exported: " << channel << " (" << messages << " message(s); more channels than one export writes)\n";
   std::cout << "left out: " << result.unknown.size() << " channel(s) of unknown type, " << skipped
             << " undecodable message(s)\n";
+  if (!result.too_many.empty())
+    std::cout << "left out: " << result.too_many.size() << " channel(s) beyond the " << result.channels.size()
+              << " one export writes\n";
+  // The rows above are what the file's whole records hold; a damaged file may have lost others.
+  if (!result.damage.empty()) std::cout << "damaged: " << result.damage << '\n';
   return 0;
 }
 

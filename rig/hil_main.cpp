@@ -85,6 +85,10 @@ int main(int argc, char** argv) {
                       "SCHED_FIFO priority of the lock-step processes, the same for all, where the system allows "
                       "it (default 0: normal scheduling); real time runs 10 above it (default 20)")
       ->check(CLI::Range(0, 99));
+  run_cmd->add_option("--answer-timeout-ms", run.answer_timeout_ms,
+                      "lock-step: how long the CNC waits for an answer before it asks whether the participant's "
+                      "process still runs (lost if not, waited for on if it does; default 5000; docs/RELIABILITY.md)")
+      ->check(CLI::Range(1, 600000));
   run_cmd->add_flag("--realtime", run.realtime,
                     "real-time mode (RIG-6): the CNC ticks on the wall clock at the machine's cycle time and never "
                     "waits for answers (as the scenario key run.realtime; docs/REALTIME.md)");

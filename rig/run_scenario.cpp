@@ -17,10 +17,12 @@
 #include "drive_model.hpp"
 #include "in_process_run.hpp"
 #include "node_errors.hpp"
+#include "participant.hpp"
 #include "plots.hpp"
 #include "process.hpp"
 #include "report.hpp"
 #include "run_identity.hpp"
+#include "run_secret.hpp"
 #include "run_log.hpp"
 #include "run_page.hpp"
 #include "run_summary.hpp"
@@ -99,15 +101,21 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
                                                std::string& placed) {
   const std::string url = rig_url(rig_port(options));
   const fs::path bin = options.bin_dir;
+  // RIG-12: the run's secret, handed to each node outside the bus.
+  const std::string key_file = (dir / "run.key").string();
+  fs::remove(key_file);
+  lcm_support::RunSecret::generate().write(key_file);
   auto node_output = [&](const std::string& name) { return node_output_file(dir.string(), name); };
   auto node_args = [&](const std::string& exe) {
-    return std::vector<std::string>{(bin / exe).string(), "--scenario", resolved, "--url", url, "--run-id", run_id};
+    return std::vector<std::string>{(bin / exe).string(), "--scenario", resolved, "--url",      url,
+                                    "--run-id",          run_id,  "--key-file", key_file};
   };
 
   // The logger is told every participant: it records until each has ended,
   // whenever it came up itself.
   std::vector<std::string> logger_args = {(bin / "hil_logger").string(), "--url", url, "--out", log_file,
-                                          "--run-id", run_id, "--scenario", resolved, "--participants", "cnc",
+                                          "--run-id", run_id, "--key-file", key_file, "--scenario", resolved,
+                                          "--participants", "cnc",
                                           "plc_sim"};
   for (const AxisConfig& axis : scenario.machine.axes) logger_args.push_back("axis_sim " + axis.name);
 
@@ -130,7 +138,9 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
         std::make_unique<Process>("axis_sim " + axis.name, args, node_output("axis_sim " + axis.name), lock_step));
   }
   nodes.push_back(std::make_unique<Process>("plc_sim", node_args("plc_sim"), node_output("plc_sim"), lock_step));
-  Process cnc("cnc", node_args("cnc"), node_output("cnc"), lock_step);
+  std::vector<std::string> cnc_args = node_args("cnc");
+  if (options.answer_timeout_ms > 0) cnc_args.insert(cnc_args.end(), {"--answer-timeout-ms", std::to_string(options.answer_timeout_ms)});
+  Process cnc("cnc", cnc_args, node_output("cnc"), lock_step);
   placed = cpu >= 0 ? std::string(scenario.realtime ? ", the cycle nodes on CPU " : ", the lock-step nodes on CPU ") +
                           std::to_string(cpu)
                     : "";
@@ -152,9 +162,15 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
   }
   std::vector<logger::ProcessExit> exits{{"cnc", cnc_status}};
   processes << "cnc " << (cnc_status ? std::to_string(*cnc_status) : "hung, killed: " + std::to_string(cnc.stop()));
+  // The nodes end on their own: soon after the CNC's RUN_END, or cnc_silence
+  // after a CNC that died. One deadline for all: 10 s for each in turn left
+  // axis_sim X, waited for right after the logger, no margin (issue 33).
+  const auto nodes_deadline =
+      std::chrono::steady_clock::now() + lcm_support::cnc_silence + std::chrono::seconds(5);
   for (size_t i = 0; i < nodes.size(); ++i) {
     Process& node = *nodes[i];
-    const std::optional<int> status = node.wait_for(std::chrono::seconds(10));
+    const std::optional<int> status = node.wait_for(std::chrono::duration_cast<std::chrono::milliseconds>(
+        std::max(nodes_deadline - std::chrono::steady_clock::now(), std::chrono::steady_clock::duration::zero())));
     exits.push_back({node.name(), status});
     processes << ", " << node.name() << ' ' << (status ? std::to_string(*status) : "hung, killed");
     if (!status) node.stop();

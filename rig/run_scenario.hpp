@@ -15,6 +15,7 @@ struct RunOptions {
   int cpu = -2;              // the CPU of the lock-step nodes: -2 the one hil starts on, -1 anywhere
   int fifo_priority = 0;     // SCHED_FIFO priority of the lock-step nodes, one for all; 0: normal scheduling
   bool realtime = false;     // real-time mode (RIG-6) whatever the scenario's run.realtime says
+  int answer_timeout_ms = 0;  // the lock-step CNC's watchdog per cycle (RIG-6); 0: the cnc's default, 5000
 };
 
 struct RunResult {

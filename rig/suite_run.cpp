@@ -122,6 +122,8 @@ SuiteResult run_suite(const SuiteOptions& options, const SuiteListener& listener
     const int cpu = options.run.cpu != -2 ? options.run.cpu : jobs > 1 ? static_cast<int>(slot % cpus) : -2;
     if (cpu != -2) args.insert(args.end(), {"--cpu", std::to_string(cpu)});
     if (options.run.fifo_priority > 0) args.insert(args.end(), {"--fifo-priority", std::to_string(options.run.fifo_priority)});
+    if (options.run.answer_timeout_ms > 0)
+      args.insert(args.end(), {"--answer-timeout-ms", std::to_string(options.run.answer_timeout_ms)});
     if (listener.started) listener.started(s.scenario_file);
     running.push_back({p.index, slot, p.realtime, std::chrono::steady_clock::now(),
                        std::make_unique<Process>(s.scenario_file, args, (fs::path(s.run_dir) / "hil.out").string())});

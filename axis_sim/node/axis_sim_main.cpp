@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
     std::optional<hil::lcm_support::RealTimeProcess> real_time;
     if (scenario.realtime) real_time = hil::lcm_support::enter_real_time();
     const auto bus =
-        hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "axis_sim " + axis_name);
+        hil::lcm_support::with_faults(hil::lcm_support::run_bus(options), scenario.faults, "axis_sim " + axis_name);
     hil::lcm_support::Inbox inbox(*bus, options.run_id);
     hil::axis::AxisSimNode node(scenario.machine.axes[index], scenario.machine.cycle_time_s(), inbox);
     hil::lcm_support::Participant participant(inbox, node.name());
@@ -36,8 +36,9 @@ int main(int argc, char** argv) {
       return 2;
     }
     if (real_time) hil::lcm_support::publish_real_time(inbox, *real_time, node.name());
-    if (!participant.serve_until_end(std::chrono::seconds(10))) {
-      spdlog::error("no message for 10 s after cycle {}: the CNC is gone", node.last_cycle());
+    using hil::lcm_support::cnc_silence;
+    if (!participant.serve_until_end(cnc_silence, [&] { return node.last_cycle(); })) {
+      spdlog::error("the CNC is gone: nothing from it for {} s after cycle {}", cnc_silence.count(), node.last_cycle());
       return 2;
     }
     participant.announce_end(node.last_cycle());

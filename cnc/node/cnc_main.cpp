@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     const hil::lcm_support::RealTimeProcess process =
         scenario.realtime ? hil::lcm_support::enter_real_time() : hil::lcm_support::RealTimeProcess{};
     const auto bus =
-        hil::lcm_support::with_faults(hil::lcm_support::node_bus(options.url), scenario.faults, "cnc");
+        hil::lcm_support::with_faults(hil::lcm_support::run_bus(options), scenario.faults, "cnc");
     return hil::cnc_node::run_cnc(
         scenario, text, *bus, options.run_id, participants,
         {std::chrono::milliseconds(answer_timeout_ms), std::chrono::milliseconds(logger_timeout_ms)}, process);

@@ -5,8 +5,10 @@
 #include <hil/participant_t.hpp>
 #include <hil/run_manifest_t.hpp>
 #include <spdlog/spdlog.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "channel.hpp"
@@ -19,6 +21,7 @@
 #include "real_time_answers.hpp"
 #include "rt_stats_message.hpp"
 #include "run_identity.hpp"
+#include "process_state.hpp"
 #include "tick_clock.hpp"
 
 namespace hil::cnc_node {
@@ -63,7 +66,10 @@ class CncNode : public cnc::CyclePolicy {
     inbox_.on<hil::participant_t>(
         channels::participant,
         [this](const hil::participant_t& m, const lcm::ReceiveBuffer& rbuf) {
-          if (m.phase == hil::participant_t::PHASE_READY) ready_.insert(m.name);
+          if (m.phase == hil::participant_t::PHASE_READY) {
+            ready_.insert(m.name);
+            pids_[m.name] = m.pid;
+          }
           if (m.name == "logger" && m.phase != hil::participant_t::PHASE_RUN_END) {
             lock_step_.logger_alive(rbuf.recv_utime, m.cycle);
             real_time_.logger_alive(rbuf.recv_utime);
@@ -203,8 +209,14 @@ class CncNode : public cnc::CyclePolicy {
     m.verdicts = 0;
     m.n_rejected = 0;
     m.n_lost = 0;
+    m.pid = static_cast<int32_t>(::getpid());
     return m;
   }
+
+  // While it waits on a slow participant (longer than the others' patience,
+  // lcm_support::cnc_silence), the CNC says it is still there.
+  static constexpr std::chrono::seconds alive_every{1};
+  void announce_alive() { bus_.publish(channels::participant, announcement(hil::participant_t::PHASE_ALIVE, lock_step_.cycle())); }
 
   void announce_ready() { bus_.publish(channels::participant, announcement(hil::participant_t::PHASE_READY, 0)); }
 
@@ -224,23 +236,63 @@ class CncNode : public cnc::CyclePolicy {
     spdlog::log(e.severity == Severity::error ? spdlog::level::err : spdlog::level::warn, "{}", describe(e));
   }
 
-  // Until every participant not lost has answered; the watchdog loses the
-  // silent ones.
+  // A silent participant's process, said in the cnc's output when it is not running.
+  ProcessState process_of(const std::string& name) const {
+    const auto pid = pids_.find(name);
+    const ProcessState state = process_state(pid == pids_.end() ? 0 : pid->second);
+    if (state != ProcessState::running)
+      spdlog::warn("cycle {}: {} is silent, its process {}", lock_step_.cycle(), name, to_string(state));
+    return state;
+  }
+
+  // Until every participant not lost has answered. At the watchdog the
+  // silent ones are lost, but for those whose process is alive and running
+  // (a loaded host): they are waited for on, and said so each timeout.
   void wait_for_answers() {
-    const auto give_up = clock_type::now() + timeouts_.answer;
+    const auto since = clock_type::now();
+    auto give_up = since + timeouts_.answer;
+    auto next_alive = since + alive_every, next_report = since;
     while (!lock_step_.complete()) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(give_up - clock_type::now());
-      if (left.count() <= 0) return lock_step_.lose_silent();
-      if (bus_.handle_timeout(static_cast<int>(left.count()) + 1) < 0) throw std::runtime_error("LCM receive failed");
+      if (clock_type::now() >= next_alive) {
+        announce_alive();
+        next_alive = clock_type::now() + alive_every;
+      }
+      const auto left = std::min(std::chrono::duration_cast<std::chrono::milliseconds>(give_up - clock_type::now()),
+                                 std::chrono::duration_cast<std::chrono::milliseconds>(alive_every));
+      if (left.count() <= 0) {
+        const std::vector<std::string> waited_for =
+            lock_step_.lose_silent([this](const std::string& name) { return process_of(name); });
+        if (waited_for.empty()) return;
+        if (clock_type::now() >= next_report) {  // at once, then once a second
+          std::string names;
+          for (const auto& name : waited_for) names += (names.empty() ? "" : ", ") + name;
+          spdlog::warn("cycle {}: no answer from {} for {:.3f} s, its process alive and running: waiting on (a "
+                       "loaded host?)",
+                       lock_step_.cycle(), names, std::chrono::duration<double>(clock_type::now() - since).count());
+          next_report = clock_type::now() + alive_every;
+        }
+        give_up = clock_type::now() + timeouts_.answer;
+        continue;
+      }
+      if (bus_.handle_timeout(static_cast<int>(std::max<int64_t>(left.count(), 0)) + 1) < 0)
+        throw std::runtime_error("LCM receive failed");
     }
   }
 
-  // Until the logger is within LockStep::logger_window cycles, or lost.
+  // Until the logger is within LockStep::logger_window cycles, or lost; a
+  // logger whose process is alive and running is waited for.
   void wait_for_logger() {
-    lock_step_.check_logger(wall_us());
-    while (lock_step_.logger_behind()) {
+    auto next_report = clock_type::now() + timeouts_.logger;
+    const auto liveness = [this](const std::string& name) { return process_of(name); };
+    while (lock_step_.check_logger(wall_us(), liveness) || lock_step_.logger_behind()) {
+      if (clock_type::now() > next_report) {
+        spdlog::warn("cycle {}: the logger is behind or silent, its process alive and running: waiting on (a loaded "
+                     "host?)",
+                     lock_step_.cycle());
+        announce_alive();
+        next_report = clock_type::now() + std::min<clock_type::duration>(timeouts_.logger, alive_every);
+      }
       if (bus_.handle_timeout(10) < 0) throw std::runtime_error("LCM receive failed");
-      lock_step_.check_logger(wall_us());
     }
   }
 
@@ -258,6 +310,7 @@ class CncNode : public cnc::CyclePolicy {
   MonotonicClock clock_;
   Ticker ticker_;
   std::set<std::string> ready_;
+  std::map<std::string, int32_t> pids_;  // by participant, from its READY
 };
 
 }  // namespace

@@ -72,29 +72,36 @@ void LockStep::lose(Answerer& who, const std::string& what, const std::string& p
   lost_so_far_.emplace_back(who.name, cycle_);
 }
 
-void LockStep::lose_silent() {
-  const std::string what =
-      "no answer to cycle " + std::to_string(cycle_) + " within " + std::to_string(answer_timeout_ms_) + " ms";
-  for (Answerer& a : axes_)
-    if (!a.awaited.empty() && !a.lost) lose(a, what);
-  if (!plc_.awaited.empty() && !plc_.lost) lose(plc_, what);
+std::vector<std::string> LockStep::lose_silent(const Liveness& liveness) {
+  std::vector<std::string> waited_for;
+  auto silent = [&](Answerer& a) {
+    if (a.awaited.empty() || a.lost) return;
+    const ProcessState process = liveness ? liveness(a.name) : ProcessState::unknown;
+    if (process == ProcessState::running) return waited_for.push_back(a.name);
+    lose(a, "no answer to cycle " + std::to_string(cycle_) + " within " + std::to_string(answer_timeout_ms_) + " ms");
+  };
+  for (Answerer& a : axes_) silent(a);
+  silent(plc_);
+  return waited_for;
 }
 
-void LockStep::check_logger(int64_t now_us) {
-  if (!watch_logger_ || logger_.lost) return;
+bool LockStep::check_logger(int64_t now_us, const Liveness& liveness) {
+  if (!watch_logger_ || logger_.lost) return false;
   const int64_t timeout_us = logger_timeout_ms_ * 1000;
-  if (now_us - logger_heard_us_ > timeout_us)
-    return lose(logger_, "no heartbeat for " + std::to_string((now_us - logger_heard_us_) / 1000) + " ms at cycle " +
-                             std::to_string(cycle_) + ": the run is no longer recorded");
-  if (!logger_behind()) {
-    logger_behind_since_us_ = -1;
-    return;
-  }
-  if (logger_behind_since_us_ < 0) logger_behind_since_us_ = now_us;
-  if (now_us - logger_behind_since_us_ > timeout_us)
+  if (!logger_behind()) logger_behind_since_us_ = -1;
+  else if (logger_behind_since_us_ < 0) logger_behind_since_us_ = now_us;
+  const bool silent = now_us - logger_heard_us_ > timeout_us;
+  const bool behind = logger_behind_since_us_ >= 0 && now_us - logger_behind_since_us_ > timeout_us;
+  if (!silent && !behind) return false;
+  if (liveness && liveness(logger_.name) == ProcessState::running) return true;  // a loaded host: waited for
+  if (silent)
+    lose(logger_, "no heartbeat for " + std::to_string((now_us - logger_heard_us_) / 1000) + " ms at cycle " +
+                      std::to_string(cycle_) + ": the run is no longer recorded");
+  else
     lose(logger_, "it has recorded up to cycle " + std::to_string(logger_cycle_) + " and not caught up with cycle " +
                       std::to_string(cycle_) + " within " + std::to_string(logger_timeout_ms_) +
                       " ms: the run is no longer recorded");
+  return false;
 }
 
 LockStep::Taken LockStep::take() {

@@ -16,6 +16,7 @@
 // machine parameter (watchdog_cycles, plc_watchdog_cycles).
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,6 +27,7 @@
 #include "fault_plan.hpp"
 #include "hli.hpp"
 #include "machine_config.hpp"
+#include "process_state.hpp"
 
 namespace hil::cnc_node {
 
@@ -49,8 +51,16 @@ class LockStep {
   std::vector<std::pair<std::string, AnswerCounts>> answer_counts() const;
   // Every participant not lost has answered the cycle.
   bool complete() const;
-  // The watchdog fired: whoever has not answered is lost.
-  void lose_silent();
+  // The cycle waited for.
+  int64_t cycle() const { return cycle_; }
+  // A participant's process, by name ("axis_sim X", "plc_sim", "logger").
+  using Liveness = std::function<ProcessState(const std::string& name)>;
+  // The answer timeout passed: whoever has not answered is lost, but for
+  // one whose process `liveness` finds alive and running (a loaded host),
+  // which is waited for on. Returns the names waited for. (The loss's event
+  // does not name the process' state: a rerun, which has no process,
+  // reproduces it word for word.)
+  std::vector<std::string> lose_silent(const Liveness& liveness = {});
 
   static constexpr int64_t logger_window = 128;
 
@@ -64,8 +74,9 @@ class LockStep {
   // wait for it before the next cycle.
   bool logger_behind() const { return watch_logger_ && !logger_.lost && cycle_ - logger_cycle_ > logger_window; }
   // At `now_us`: a logger silent, or behind, for longer than its timeout is
-  // lost.
-  void check_logger(int64_t now_us);
+  // lost, unless `liveness` finds its process running (then it is waited
+  // for: true).
+  bool check_logger(int64_t now_us, const Liveness& liveness = {});
 
   struct Taken {
     std::optional<HliControl> control;     // the PLC's answer, none if lost

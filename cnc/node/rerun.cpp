@@ -8,7 +8,6 @@
 #include <hil/participant_t.hpp>
 #include <hil/run_manifest_t.hpp>
 #include <hil/scenario_text_t.hpp>
-#include <lcm/lcm-cpp.hpp>
 
 #include <deque>
 #include <map>
@@ -19,16 +18,24 @@
 #include "channels.hpp"
 #include "cycle_loop.hpp"
 #include "cycle_messages.hpp"
+#include "event_log_reader.hpp"
 #include "inbox.hpp"
 #include "lock_step.hpp"
 #include "messages.hpp"
 #include "run_identity.hpp"
+#include "run_secret.hpp"
 #include "scenario.hpp"
+#include "untrusted_decode.hpp"
 
 namespace hil::cnc_node {
 namespace {
 
-using lcm_support::decode;
+// The recording's bytes (a log file: nobody vouches for them) and this
+// build's own, decoded without a throw or a crash.
+template <typename Message>
+bool decode(const void* data, size_t size, Message& m) {
+  return lcm_support::decode_untrusted(data, size, m);
+}
 
 // What the recorded run holds: the inputs to replay and the outputs to match.
 struct Recording {
@@ -42,44 +49,45 @@ struct Recording {
 };
 
 Recording read_recording(const std::string& path) {
-  lcm::LogFile file(path, "r");
-  if (!file.good()) throw std::runtime_error("cannot open LCM log " + path);
+  logger::EventLogReader file(path);
   Recording r;
-  bool any_event = false;
-  while (const lcm::LogEvent* e = file.readNextEvent()) {
-    any_event = true;
+  while (const logger::LogRecord* e = file.next()) {
     const std::string& ch = e->channel;
-    const uint32_t n = static_cast<uint32_t>(e->datalen);
+    const size_t n = e->data.size();
+    const uint8_t* data = e->data.data();
     if (ch == channels::manifest) {
       hil::run_manifest_t m;
-      if (!decode(e->data, n, m)) continue;
+      if (!decode(data, n, m)) continue;
       r.run_id = m.run_id;
       r.answer_timeout_ms = m.answer_timeout_ms;
     } else if (ch == channels::scenario) {
       hil::scenario_text_t m;
-      if (decode(e->data, n, m)) r.scenario = scenario_from_text(m.yaml, m.nc_program);
+      if (decode(data, n, m)) r.scenario = scenario_from_text(m.yaml, m.nc_program);
     } else if (ch == channels::participant) {
       hil::participant_t m;
-      if (!decode(e->data, n, m) || m.name != "cnc") continue;
+      if (!decode(data, n, m) || m.name != "cnc") continue;
       for (size_t i = 0; i < m.lost.size(); ++i) r.lost[m.lost[i]] = m.lost_cycle[i];
     } else if (ch == channels::hli_control) {
       hil::hli_control_t m;
-      if (decode(e->data, n, m)) r.controls.emplace(m.cycle, lcm_support::from_message(m));
+      if (decode(data, n, m)) r.controls.emplace(m.cycle, lcm_support::from_message(m));
     } else if (r.scenario && !channels::axis_of_state(ch).empty()) {
       hil::axis_state_t m;
       const int axis = r.scenario->machine.axis_index(channels::axis_of_state(ch));
-      if (axis < 0 || !decode(e->data, n, m)) continue;
+      if (axis < 0 || !decode(data, n, m)) continue;
       auto& errors = r.axis_errors[m.cycle];
       errors.resize(r.scenario->machine.axes.size());
       if (!errors[axis]) errors[axis] = m.errors;
     } else if (ch == channels::hli_state || !channels::axis_of_command(ch).empty()) {
-      r.outputs[ch].emplace_back(static_cast<const char*>(e->data), n);
+      r.outputs[ch].emplace_back(reinterpret_cast<const char*>(data), n);
     } else if (ch == channels::event) {
       hil::event_t m;
-      if (decode(e->data, n, m) && m.source == "cnc") r.outputs[ch].emplace_back(static_cast<const char*>(e->data), n);
+      if (decode(data, n, m) && m.source == "cnc") r.outputs[ch].emplace_back(reinterpret_cast<const char*>(data), n);
     }
   }
-  if (!any_event) throw std::runtime_error(path + " is not an LCM event log (no event found)");
+  if (file.records() == 0) throw std::runtime_error(path + " is not an LCM event log (no event found)");
+  // Its outputs would be compared with a recording that has holes.
+  if (file.damage().any())
+    throw std::runtime_error(path + " is damaged: " + file.damage().describe() + "; hil rerun reruns whole logs only");
   if (!r.scenario) throw std::runtime_error(path + ": no scenario (HIL_SCENARIO): nothing to rerun");
   // RIG-6: in real time an answer went into the cycle it arrived in, which
   // the log does not record (only the cycle it answered).
@@ -175,11 +183,15 @@ class RecordedInput : public cnc::CyclePolicy {
   bool matches(int64_t k, const EncodedMessage& m) {
     auto& queue = rec_.outputs[m.channel];
     const std::string now(m.bytes.begin(), m.bytes.end());
+    // The recorded MAC is the run's (RIG-12); this build's messages carry none.
+    auto unsigned_part = [](const std::string& bytes) {
+      return bytes.substr(0, bytes.size() - std::min(bytes.size(), lcm_support::RunSecret::mac_bytes));
+    };
     if (queue.empty()) {
       out_ << "differs at cycle " << k << ": " << m.channel << ": this build publishes a message the recorded run has not\n";
       return false;
     }
-    if (queue.front() != now) {
+    if (unsigned_part(queue.front()) != unsigned_part(now)) {
       out_ << "differs at cycle " << k << ": " << m.channel << ": " << describe_difference(m.channel, queue.front(), now)
            << '\n';
       return false;

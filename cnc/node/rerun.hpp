@@ -10,7 +10,7 @@ namespace hil::cnc_node {
 
 // Prints "identical ..." or the first cycle and message that differ.
 // Returns 0 if identical, 1 if not; throws std::runtime_error for a log it
-// cannot rerun (not an LCM log, no scenario, a real-time run).
+// cannot rerun (not an LCM log, a damaged one, no scenario, a real-time run).
 int rerun(const std::string& log_path, std::ostream& out);
 
 }  // namespace hil::cnc_node

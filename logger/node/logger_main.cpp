@@ -16,7 +16,7 @@
 int main(int argc, char** argv) {
   using clock_type = std::chrono::steady_clock;
   CLI::App app{"hil_logger: records every channel of a rig run into an LCM event log"};
-  std::string url, path, scenario_file;
+  std::string url, path, scenario_file, key_file;
   int64_t run_id = 0;
   std::vector<std::string> participants;
   double linger_s = 3.0;
@@ -27,10 +27,11 @@ int main(int argc, char** argv) {
                  "every node whose RUN_END closes the log (default: the manifest's participants and the cnc)");
   app.add_option("--scenario", scenario_file, "the resolved scenario file: written into the log after the manifest")
       ->check(CLI::ExistingFile);
+  hil::lcm_support::add_key_file_option(app, key_file)->needs("--run-id");
   app.add_option("--linger-s", linger_s, "after the CNC's RUN_END, wait at most this long for the others");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   return hil::lcm_support::guarded_main("logger", [&] {
-    const auto bus = hil::lcm_support::node_bus(url, {std::chrono::milliseconds(1)});
+    const auto bus = hil::lcm_support::run_bus(url, key_file, run_id, {std::chrono::milliseconds(1)});
     std::optional<std::pair<std::string, std::string>> scenario;
     if (!scenario_file.empty())
       scenario.emplace(hil::read_text(scenario_file), hil::load_scenario_file(scenario_file).nc_program);
@@ -66,8 +67,9 @@ int main(int argc, char** argv) {
       }
       if (attendance.cnc_ended() && cnc_end == clock_type::time_point{}) cnc_end = now;
       if (attendance.cnc_ended() && now - cnc_end > std::chrono::duration<double>(linger_s)) break;
-      if (!attendance.cnc_ended() && now - last_message > std::chrono::seconds(10)) {
-        spdlog::error("no message of the run for 10 s and no RUN_END from the CNC: log closed early");
+      if (!attendance.cnc_ended() && now - last_message > hil::lcm_support::cnc_silence) {
+        spdlog::error("no message of the run for {} s and no RUN_END from the CNC: log closed early",
+                      hil::lcm_support::cnc_silence.count());
         node.seal();
         return 2;
       }

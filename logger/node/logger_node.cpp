@@ -54,7 +54,7 @@ std::string names(const std::vector<std::string>& list) {
 LoggerNode::LoggerNode(lcm_support::Bus& bus, const std::string& path, int64_t run_id,
                        std::vector<std::string> participants,
                        std::optional<std::pair<std::string, std::string>> scenario, bool decode_check)
-    : log_(path), decode_check_(decode_check), run_id_(run_id), scenario_(std::move(scenario)) {
+    : bus_(bus), log_(path), decode_check_(decode_check), run_id_(run_id), scenario_(std::move(scenario)) {
   for (const std::string& name : participants) attendance_.expect(name);
   told_participants_ = !participants.empty();
   if (scenario_) faults_ = scenario_from_text(scenario_->first, scenario_->second).faults;
@@ -74,7 +74,7 @@ void LoggerNode::seal() {
   m.missing = attendance_.missing();
   for (const auto& name : attendance_.lost()) m.missing.push_back(name);
   m.n_missing = static_cast<int16_t>(m.missing.size());
-  m.rejected = lcm_support::to_message(refused_);
+  m.rejected = lcm_support::to_message(refused());
   m.n_rejected = static_cast<int16_t>(m.rejected.size());
   m.socket_drops = socket_drops_ = socket_drops();
   write(channels::log_end, m, 0);

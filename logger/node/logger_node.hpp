@@ -50,7 +50,12 @@ class LoggerNode {
   // Called as recorded_cycle() advances (the in-process run's heartbeat).
   void on_progress(std::function<void(int64_t recorded_cycle)> progress) { progress_ = std::move(progress); }
   int64_t dropped() const { return socket_drops_; }  // by the kernel, known after seal()
-  const traffic::Ledger& refused() const { return refused_; }
+  // What it did not record, and what its bus refused before (Bus::refused).
+  traffic::Ledger refused() const {
+    traffic::Ledger all = bus_.refused();
+    all.add(refused_);
+    return all;
+  }
 
   // The last record: the logger closed the log, and what it missed.
   void seal();
@@ -74,6 +79,7 @@ class LoggerNode {
   void write(const std::string& channel, const Message& m, int64_t utime);
   void write_raw(const std::string& channel, const void* data, uint32_t size, int64_t utime);
 
+  lcm_support::Bus& bus_;
   EventLogWriter log_;
   bool decode_check_;
   int64_t run_id_;

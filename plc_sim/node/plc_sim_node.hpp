@@ -24,6 +24,8 @@ class PlcSimNode {
   // Publishes one event per expectation, its verdict a field (the text is
   // for people); returns how many it published.
   int report(int64_t cycle);
+  // The last HLI_STATE cycle taken (-1: none yet).
+  int64_t last_cycle() const { return last_cycle_; }
 
  private:
   void on_state(const hil::hli_state_t& m);

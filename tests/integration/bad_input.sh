@@ -14,6 +14,14 @@ printf 'not an LCM log\n' >"$WORK/not_a_log"
 expect_status 2 "$hil" check "$WORK/not_a_log"
 expect_output "not an LCM"
 
+# RIG-11 (issue 33): a machine limit outside physical sense is refused,
+# naming the machine file, the key, the value and the range (it used to run
+# and time out, the axis never moving).
+sed 's/j_max: 30000/j_max: 1e-320/' "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/tiny_jerk_machine.yaml"
+printf 'name: x\nmachine: tiny_jerk_machine.yaml\nnc_program: "M30"\n' >"$WORK/tiny_jerk.yaml"
+expect_status 2 "$hil" run "$WORK/tiny_jerk.yaml" --out "$WORK/run11" --port 7753
+expect_output "tiny_jerk_machine.yaml: machine.axes[2].j_max: must be a number within 0.1 .. 1e+09 mm/s^3, not 1e-320"
+
 # RIG-3: a drive model whose closed loop would be unstable is refused.
 printf 'name: x\nmachine:\n  axes:\n    - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 60, velocity_lag_s: 0.02, velocity_loop_order: 2, velocity_damping: 0.5}\nnc_program: "M30"\n' >"$WORK/unstable.yaml"
 expect_status 2 "$hil" run "$WORK/unstable.yaml" --out "$WORK/run3" --port 7742

@@ -31,6 +31,7 @@ run_killing axis_sim_Y
 expect_output "  because log: axis_sim Y went silent: the cnc lost it at cycle 10"
 expect_output "[cnc] error axis Y: axis_sim Y lost: no answer to cycle 10"
 expect_output "within 5000 ms; the run goes on without it"
+grep -q "axis_sim Y is silent, its process gone" "$WORK/axis_sim_Y/cnc.out" || fail "the cnc did not say the process is gone"
 expect_output "channel stopped: drive error on axis Y (axis_sim Y lost: no answer to cycle 10"
 expect_output "axis_sim Y 137 ("
 # RIG-7: the rerun loses axis Y at the same cycle and stops the same way.

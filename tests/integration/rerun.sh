@@ -2,7 +2,8 @@
 # RIG-7: `hil rerun` feeds the PLC inputs (and drive monitoring answers) of
 # a recorded run into the current CNC build in lock-step: the demo reruns
 # identical; a run with a drive error (the channel's error stop) too; and a
-# log whose recorded setpoint was altered is caught at that cycle.
+# log whose recorded setpoint was altered is caught at that cycle (the
+# acceleration's last byte: the message's last 8 are the run's MAC, RIG-12).
 . "$(dirname "$0")/lib.sh"
 
 expect_status 0 "$hil" run "$HIL_SOURCE/scenarios/demo.yaml" --out "$WORK/demo" --port 7720
@@ -22,7 +23,7 @@ perl -e '
     die "bad sync" unless $sync == 0xEDA1DA01;
     my $channel = substr($log, $pos + 28, $clen);
     my $end = $pos + 28 + $clen + $dlen;
-    if ($channel eq "AXIS_Y_CMD" && ++$seen == 2000) { substr($log, $end - 1, 1) ^= "\x01"; last; }
+    if ($channel eq "AXIS_Y_CMD" && ++$seen == 2000) { substr($log, $end - 9, 1) ^= "\x01"; last; }
     $pos = $end;
   }
   open(my $out, ">:raw", $ARGV[1]) or die; print $out $log;' "$WORK/demo/run.lcmlog" "$WORK/altered.lcmlog"

@@ -4,7 +4,9 @@
 // far ahead, another run's answers, a message of the wrong type, datagrams
 // LCM 1.3.1 cannot frame (a channel name without NUL, through a raw UDP
 // socket), and it can kill or pause a node at that cycle (its pid from a
-// file).
+// file). Without the run's secret it is an outsider: all it sends of the
+// run is refused as unauthenticated (RIG-12); with it (--key-file) a faulty
+// participant of the run, whose messages the receivers' own rules refuse.
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <signal.h>
@@ -14,7 +16,9 @@
 #include <CLI/CLI.hpp>
 #include <hil/axis_state_t.hpp>
 #include <hil/hli_control_t.hpp>
+#include <hil/event_t.hpp>
 #include <hil/hli_state_t.hpp>
+#include <hil/participant_t.hpp>
 #include <hil/run_manifest_t.hpp>
 #include <lcm/lcm-cpp.hpp>
 
@@ -22,11 +26,14 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <regex>
 #include <thread>
 
-#include "command_line.hpp"
+#include "bus.hpp"
 #include "channels.hpp"
+#include "command_line.hpp"
+#include "run_secret.hpp"
 
 namespace {
 
@@ -61,8 +68,10 @@ int main(int argc, char** argv) {
   CLI::App app{"hil_inject: sends what a rig must refuse, at a cycle of its run"};
   std::string url, pid_file;
   int64_t at_cycle = 100;
-  std::vector<std::string> forge_state, foreign_state, wrong_type;
-  bool forge_control = false;
+  std::vector<std::string> forge_state, foreign_state, wrong_type, unsigned_state;
+  std::string key_file;
+  bool forge_control = false, forge_run_end = false, forge_pass = false;
+  int forge_alive = 0;
   int unframed = 0;
   app.add_option("--url", url, "the rig's LCM URL")->required();
   app.add_option("--at-cycle", at_cycle, "act once the rig's HLI_STATE reaches this cycle");
@@ -70,6 +79,12 @@ int main(int argc, char** argv) {
   app.add_flag("--forge-control", forge_control, "HLI_CONTROL of this run, a million cycles ahead, feed hold on");
   app.add_option("--foreign-state", foreign_state, "AXIS_<A>_STATE of another run, for the next cycle");
   app.add_option("--wrong-type", wrong_type, "an hli_control_t of this run on AXIS_<A>_STATE");
+  app.add_option("--unsigned-state", unsigned_state,
+                 "AXIS_<A>_STATE of this run for the next cycle with a drive error, never signed (an outsider)");
+  app.add_flag("--forge-run-end", forge_run_end, "the cnc's RUN_END of this run at this cycle");
+  app.add_option("--forge-alive", forge_alive, "this many 'logger' ALIVE heartbeats of this run, 100000 cycles ahead, 50 ms apart (after a kill)");
+  app.add_flag("--forge-pass", forge_pass, "a plc_sim PASS verdict event of this run");
+  app.add_option("--key-file", key_file, "the run's secret, read when acting: what it forges is signed (an insider)");
   app.add_option("--unframed", unframed, "this many 19-byte datagrams on HLI_CONTROL with no NUL");
   app.add_option("--kill-pid-file", pid_file, "SIGKILL the process whose pid this file holds");
   double pause_s = 0;
@@ -102,19 +117,27 @@ int main(int argc, char** argv) {
     lcm.handleTimeout(100);
   }
   const int64_t k = rig.cycle;
+  std::optional<hil::lcm_support::RunSecret> secret;
+  if (!key_file.empty()) secret = hil::lcm_support::RunSecret::read(key_file);
+  // Signed with the run's secret if it has it.
+  auto send = [&](const std::string& channel, const auto& message) {
+    std::vector<uint8_t> bytes = hil::lcm_support::encode(message);
+    if (secret) secret->sign(channel, bytes.data(), bytes.size());
+    lcm.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
+  };
   for (const auto& axis : forge_state) {
     hil::axis_state_t s{};
     s.run_id = rig.run_id;
     s.cycle = k + 1000000;
     s.axis = axis;
-    lcm.publish(hil::channels::axis_state(axis), &s);
+    send(hil::channels::axis_state(axis), s);
   }
   if (forge_control) {
     hil::hli_control_t c{};
     c.run_id = rig.run_id;
     c.cycle = k + 1000000;
     c.feedhold.command_w = c.feedhold.enable_w = true;
-    lcm.publish(hil::channels::hli_control, &c);
+    send(hil::channels::hli_control, c);
   }
   for (const auto& axis : foreign_state) {
     hil::axis_state_t s{};
@@ -128,7 +151,32 @@ int main(int argc, char** argv) {
     hil::hli_control_t c{};
     c.run_id = rig.run_id;
     c.cycle = k + 1;
-    lcm.publish(hil::channels::axis_state(axis), &c);
+    send(hil::channels::axis_state(axis), c);
+  }
+  for (const auto& axis : unsigned_state) {
+    hil::axis_state_t s{};
+    s.run_id = rig.run_id;
+    s.cycle = k + 1;
+    s.axis = axis;
+    s.errors = hil::axis_state_t::MONITOR_ACCELERATION;  // a fake drive error, if it were taken
+    lcm.publish(hil::channels::axis_state(axis), &s);
+  }
+  if (forge_run_end) {
+    hil::participant_t end{};
+    end.run_id = rig.run_id;
+    end.cycle = k;
+    end.name = "cnc";
+    end.phase = hil::participant_t::PHASE_RUN_END;
+    send(hil::channels::participant, end);
+  }
+  if (forge_pass) {
+    hil::event_t e{};
+    e.run_id = rig.run_id;
+    e.cycle = k;
+    e.verdict = hil::event_t::VERDICT_PASS;
+    e.source = "plc_sim";
+    e.message = "PASS at channel_state=PROGRAM_END: all checks hold";
+    send(hil::channels::event, e);
   }
   for (int i = 0; i < unframed; ++i) send_unframed(url, hil::channels::hli_control);
   if (!pid_file.empty()) {
@@ -142,6 +190,16 @@ int main(int argc, char** argv) {
       std::this_thread::sleep_for(std::chrono::duration<double>(pause_s));
       ::kill(pid, SIGCONT);
     }
+  }
+  // After a kill: heartbeats that would hide a killed logger, 50 ms apart.
+  for (int i = 0; i < forge_alive; ++i) {
+    hil::participant_t alive{};
+    alive.run_id = rig.run_id;
+    alive.cycle = k + 100000;
+    alive.name = "logger";
+    alive.phase = hil::participant_t::PHASE_ALIVE;
+    send(hil::channels::participant, alive);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   std::cout << "hil_inject: acted at cycle " << k << " of run " << rig.run_id << '\n';
   return 0;

@@ -232,9 +232,10 @@ TEST_CASE("RIG-3 RIG-4 machine numbers: NaN and infinity are refused in every nu
       CHECK_THROWS_WITH(parse_machine_config(machine), Catch::Contains("machine.axes[0]." + key + ": must be a "));
     }
   const std::vector<std::pair<std::string, std::string>> axis_cases = {
-      {", slep_max: 0.5, slep_min: .nan", "machine.axes[0].slep_min: must be a number > 0"},
-      {", swe_neg: .nan, swe_pos: 5", "machine.axes[0].swe_neg: must be a finite number"},
-      {", swe_neg: -5, swe_pos: .inf", "machine.axes[0].swe_pos: must be a finite number"},
+      {", slep_max: 0.5, slep_min: .nan",
+       "machine.axes[0].slep_min: must be a number within 0.0001 .. 1000 mm, not .nan"},
+      {", swe_neg: .nan, swe_pos: 5", "machine.axes[0].swe_neg: must be a number within -1e+06 .. 1e+06 mm, not .nan"},
+      {", swe_neg: -5, swe_pos: .inf", "machine.axes[0].swe_pos: must be a number within -1e+06 .. 1e+06 mm, not .inf"},
       {", dyn_monitoring_a_err: 2000.5", "machine.axes[0].dyn_monitoring_a_err: must be a whole number"},
   };
   for (const auto& [yaml, message] : axis_cases) CHECK_THROWS_WITH(axis(yaml), Catch::Contains(message));
@@ -246,7 +247,7 @@ TEST_CASE("RIG-3 RIG-4 machine numbers: NaN and infinity are refused in every nu
       {"cycle_time_us: 1000.5\n", "machine.cycle_time_us: must be a whole number"},
       {"override_max_percent: .inf\n", "machine.override_max_percent: must be a whole number"},
       {"fb_storage_size: -1\n", "machine.fb_storage_size: must be a whole number within 0"},
-      {"m_pre_outp: {7: .nan}\n", "machine.m_pre_outp[7]: must be a number >= 0, not .nan"},
+      {"m_pre_outp: {7: .nan}\n", "machine.m_pre_outp[7]: must be a number within 0 .. 1e+10 x 0.1 um, not .nan"},
       {"m_pre_outp: {-7: 10}\n", "machine.m_pre_outp: must be a whole number within 0"},
       {"name: [a]\n", "machine.name: must be text, not a list"},
   };

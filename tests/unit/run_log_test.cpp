@@ -28,8 +28,11 @@ using namespace hil;
 
 namespace {
 
+int64_t records_written = 0;  // by write(): the seal counts them, as the logger does
+
 template <typename T>
 void write(lcm::LogFile& log, const std::string& channel, const T& msg) {
+  ++records_written;
   std::vector<uint8_t> buf(msg.getEncodedSize());
   msg.encode(buf.data(), 0, static_cast<int>(buf.size()));
   lcm::LogEvent e;
@@ -73,6 +76,7 @@ void write_log(const std::string& path, const SyntheticRun& run) {
   if (run.realtime) yaml << "run:\n  realtime: true\n";
   lcm::LogFile log(path, "w");
   REQUIRE(log.good());
+  records_written = 0;
   const std::vector<std::string> axes = {"X", "Y", "Z"};
   hil::run_manifest_t manifest{};
   manifest.run_id = run.run_id;
@@ -170,6 +174,7 @@ void write_log(const std::string& path, const SyntheticRun& run) {
   hil::log_summary_t seal{};
   seal.run_id = run.run_id;
   seal.cycle = last;
+  seal.recorded = records_written;
   write(log, channels::log_end, seal);
 }
 

@@ -142,7 +142,7 @@ TEST_CASE("RIG-3 machine: P-AXIS-00441/00442 below 1000 (limit under a_max) are 
                     Catch::Contains("P-AXIS-00442"));
   CHECK_THROWS_WITH(parse_machine_config(YAML::Load(
                         "axes: [{name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: -1, velocity_lag_s: 0.002}]")),
-                    Catch::Contains("machine.axes[0].kv: must be a number > 0, not -1"));
+                    Catch::Contains("machine.axes[0].kv: must be a number within 0.1 .. 10000 1/s, not -1"));
   CHECK_THROWS_WITH(parse_machine_config(YAML::Load("axes: []")), Catch::Contains("non-empty"));
 }
 
@@ -183,7 +183,7 @@ TEST_CASE("RIG-3 machine: drive model keys and monitoring parameters P-AXIS-0043
   CHECK_THROWS_WITH(machine(", swe_pos: 500"), Catch::Contains("P-AXIS-00177"));
   CHECK_THROWS_WITH(machine(", swe_neg: 5, swe_pos: 5"), Catch::Contains("P-AXIS-00177 swe_neg must be below"));
   CHECK_THROWS_WITH(machine(", swe_neg: -5, swe_pos: 5, swe_toleranz: -1"),
-                    Catch::Contains("machine.axes[0].swe_toleranz: must be a number >= 0, not -1"));
+                    Catch::Contains("machine.axes[0].swe_toleranz: must be a number within 0 .. 1000 mm, not -1"));
 }
 
 TEST_CASE("RIG-5 scenario: expected events match by parameter, ID and NC line; absent ones must not appear",
@@ -233,7 +233,7 @@ machine:
     - {name: X, v_max: 100, a_max: 1000, j_max: 10000, kv: 40, velocity_lag_s: 0.002}
 nc_program: "M30\n"
 )")),
-                    Catch::Contains("machine.m_pre_outp[7]: must be a number >= 0, not -1"));
+                    Catch::Contains("machine.m_pre_outp[7]: must be a number within 0 .. 1e+10 x 0.1 um, not -1"));
 }
 
 namespace {
