@@ -1,16 +1,8 @@
 #include "authenticated_bus.hpp"
 
-#include <cstring>
+#include "inbox.hpp"
 
 namespace hil::lcm_support {
-
-bool names_run(const void* data, uint32_t size, int64_t run_id) {
-  if (size < 16) return false;
-  const auto* p = static_cast<const uint8_t*>(data) + 8;
-  uint64_t v = 0;
-  for (int i = 0; i < 8; ++i) v = v << 8 | p[i];
-  return static_cast<int64_t>(v) == run_id;
-}
 
 AuthenticatedBus::AuthenticatedBus(std::unique_ptr<Bus> inner, RunSecret secret, int64_t run_id)
     : inner_(std::move(inner)), secret_(std::move(secret)), run_id_(run_id) {}
@@ -35,7 +27,7 @@ bool AuthenticatedBus::authentic(const lcm::ReceiveBuffer& rbuf, const std::stri
       channel == last_.channel)
     return last_.authentic;
   // Unframed bytes and other runs' messages go on: the receiver counts them.
-  const bool authentic = rbuf.data_size > LCM_MAX_MESSAGE_SIZE || !names_run(rbuf.data, rbuf.data_size, run_id_) ||
+  const bool authentic = rbuf.data_size > LCM_MAX_MESSAGE_SIZE || named_run_id(rbuf.data, rbuf.data_size) != run_id_ ||
                          secret_.verify(channel, static_cast<const uint8_t*>(rbuf.data), rbuf.data_size);
   if (!authentic) refused_.refuse(channel, traffic::Refusal::unauthenticated);
   last_ = {rbuf.data, rbuf.data_size, rbuf.recv_utime, channel, authentic};

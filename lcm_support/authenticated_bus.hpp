@@ -48,8 +48,4 @@ class AuthenticatedBus : public Bus {
   } last_;
 };
 
-// Whether an encoded rig message names `run_id` (bytes 8 .. 16, after the
-// type's fingerprint; inbox.hpp).
-bool names_run(const void* data, uint32_t size, int64_t run_id);
-
 }  // namespace hil::lcm_support

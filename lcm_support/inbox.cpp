@@ -60,6 +60,11 @@ std::optional<Identity> as_channel_type(const std::string& channel, Read read) {
 
 }  // namespace
 
+std::optional<int64_t> named_run_id(const void* data, uint32_t size) {
+  if (size < 16) return std::nullopt;
+  return big_endian_64(static_cast<const uint8_t*>(data) + 8);
+}
+
 std::optional<Identity> identify(const std::string& channel, const void* data, uint32_t size) {
   return as_channel_type(channel, [&](auto type) { return identity<typename decltype(type)::type>(data, size); });
 }

@@ -32,6 +32,10 @@ bool decode(const void* data, uint32_t size, Message& message) {
   return decode_untrusted(data, size, message);
 }
 
+// The run id an encoded rig message names (bytes 8 .. 16, after its type's
+// fingerprint; every rig type begins with it), none for fewer bytes.
+std::optional<int64_t> named_run_id(const void* data, uint32_t size);
+
 // The run and cycle a message on a rig channel names.
 struct Identity {
   int64_t run_id = 0;
@@ -61,16 +65,12 @@ class Inbox {
       Message m;
       if (!decode(rbuf.data, rbuf.data_size, m)) return ledger_.refuse(ch, traffic::Refusal::undecodable);
       if (m.run_id != run_id_) return ledger_.refuse(ch, traffic::Refusal::foreign_run);
-      if (take(m, rbuf)) ++taken_;
-      else ledger_.refuse(ch, traffic::Refusal::wrong_cycle);
+      if (!take(m, rbuf)) ledger_.refuse(ch, traffic::Refusal::wrong_cycle);
     });
   }
 
   int64_t run_id() const { return run_id_; }
   Bus& bus() { return bus_; }
-  // Messages taken so far: what tells a node its run is still alive (another
-  // rig's traffic on the port must not).
-  int64_t taken() const { return taken_; }
   // What it refused, and what its bus refused before (Bus::refused).
   traffic::Ledger ledger() const {
     traffic::Ledger all = bus_.refused();
@@ -84,7 +84,6 @@ class Inbox {
   Bus& bus_;
   int64_t run_id_;
   traffic::Ledger ledger_;
-  int64_t taken_ = 0;
   std::vector<int> subscriptions_;
 };
 
