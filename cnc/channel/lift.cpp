@@ -48,6 +48,7 @@ void Lift::start(size_t range_index, int32_t override_value, double covered_at_s
   const LiftRange& g = range();
   state_ = MotionState{g.z0, 0, 0, 0};
   advanced_.reset();
+  covered_last_cycle_.reset();
   cap_ = 0;
   if (g.positioning) {
     position_to(g.command.pos);
@@ -154,13 +155,21 @@ bool Lift::update(const PathInterpolator& path, double t, int32_t override_value
     // The least time the path can take to the range's end: the rest of it
     // at the highest velocity programmed from the front block on, at the
     // override the lift accepts (LIFT-8).
-    const double rest = std::max(g.length - since_start_covered(path), 0.0);
+    const double covered = since_start_covered(path);
+    const double rest = std::max(g.length - covered, 0.0);
     const size_t front = path.empty() ? g.end : path.front_index();
     const double v_programmed = g.v_ahead[std::min(front < g.start ? 0 : front - g.start, g.v_ahead.size() - 1)];
     const int32_t effective = std::min(override_value, cap_);
     const bool was_lowering = advanced_->lowering();
     const bool held = holds_path();
-    const double v = v_programmed * effective / 1000.0;
+    // The path is faster than that while it brakes down to a lower override
+    // (or a cap): until it is down, it reaches the end sooner (fuzz lift
+    // seed 13005122: the override fell from 101.4 % to 1.1 %, Z landed a
+    // cycle after the path had left the range). Its last cycle's mean
+    // velocity bounds it from above while it brakes.
+    const double v_now = covered_last_cycle_ ? std::max(covered - *covered_last_cycle_, 0.0) / dt : 0.0;
+    covered_last_cycle_ = covered;
+    const double v = std::max(v_programmed * effective / 1000.0, v_now);
     state_ = advanced_->step(v > 0 ? rest / v : std::numeric_limits<double>::infinity());
     if (advanced_->landed()) {
       landed_ = true;

@@ -111,6 +111,7 @@ class Lift {
   MotionState state_;
   std::optional<AdvancedLifting> advanced_;
   int32_t cap_ = 0;  // the highest override an Advanced lift accepts now (LIFT-8), 0.1 %
+  std::optional<double> covered_last_cycle_;  // since the range's start, at the last Advanced Lifting step
   // Positioning (no path motion, or landing before a short cut): the profile, and how long it has run.
   bool positioning_ = false;
   bool landed_ = false;  // standing at hold_position_ until the range ends

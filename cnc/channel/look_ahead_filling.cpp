@@ -145,7 +145,11 @@ void PathInterpolator::push_curve_part(size_t block, const CurvePart& part) {
   if (!(length > shortest_rest_mm)) {
     // Too short to tell apart from the curve (10 nm): a straight line, so
     // that the path goes on from where it stands.
-    if (length > 1e-9) push({block, chord, 0.0, covered, b.slope, std::nullopt, std::nullopt, false});
+    if (length > 1e-9) {
+      PushedMotion m{block, chord, 0.0, covered, b.slope, std::nullopt, std::nullopt, false};
+      m.chord_of = part;
+      push(std::move(m));
+    }
     return;
   }
   if (pushed_.empty()) pushed_covered_ = covered_before_front_;
@@ -208,6 +212,16 @@ void PathInterpolator::restart_here(double t) {
   const StopPoint stop = leave_front(t);
   const double left = front.covered - direction_sign() * (stop.programmed_place - front.origin);
   size_t next = 1, last = k;  // the first of parts still to push; the block pushed last
+  std::vector<PushedMotion> again;  // pushed anew, in order
+  // b goes on where a ends, in the same block: a split of it.
+  const auto goes_on = [](const PushedMotion& a, const PushedMotion& b) {
+    if (a.block != b.block || a.curve || b.curve || a.chord_of || b.chord_of || b.block_stop ||
+        a.motion.type != b.motion.type)
+      return false;
+    for (size_t i = 0; i < a.motion.end.size(); ++i)
+      if (std::abs(a.motion.end[i] - b.motion.start[i]) > 1e-12 * (1 + std::abs(b.motion.start[i]))) return false;
+    return true;
+  };
   if (stop.curve) {
     // The rest of the curve and of the block at its end: what parts have of
     // them is pushed anew.
@@ -224,7 +238,8 @@ void PathInterpolator::restart_here(double t) {
     r.origin = stop.programmed_place;
     r.covered = std::max(left, 0.0);
     r.whole_block = false;
-    push(std::move(r));
+    r.block_stop = false;
+    again.push_back(std::move(r));
   } else if (parts.size() == 1 || parts[1].block != k) {
     // Nothing is left of block k: it is finished, as finish_front() would
     // have it (the cursors say where the path stands, KRN-5).
@@ -233,8 +248,24 @@ void PathInterpolator::restart_here(double t) {
     cursors_.last_finished = k;
   }
   for (size_t i = next; i < parts.size(); ++i) {
-    push(parts[i], parts[i].block_stop);
+    // The mark a part was split at is no longer in force (one stop is, and
+    // push() splits at it anew): the parts are one motion again. Kept
+    // apart, every insert stop added a split for good; stops commanded
+    // every few cycles grew the look-ahead to ~1,100 pieces (fuzz seed
+    // 12010265 never ended).
+    if (!again.empty() && goes_on(again.back(), parts[i])) {
+      PushedMotion& joined = again.back();
+      joined.motion.end = parts[i].motion.end;
+      joined.covered += parts[i].covered;
+      joined.out = parts[i].out;
+    } else {
+      again.push_back(parts[i]);
+    }
     last = parts[i].block;
+  }
+  for (PushedMotion& m : again) {
+    const bool stop_before = m.block_stop;
+    push(std::move(m), stop_before);
   }
   if (direction_ == TravelDirection::backward) cursors_.next_backward = last;
   else cursors_.next_to_look_ahead = last + 1;

@@ -33,6 +33,16 @@ StopPoint PathInterpolator::leave_front(double t) {
     stop.curve = front.segment.joint();
     stop.curve_s = front.segment.curve_position(stop.s);
     stop.curve_reversed = front.segment.reversed();
+  } else if (const std::optional<CurvePart>& part = pushed_.front().chord_of) {
+    // On the chord of a curve's tiny rest: on the curve, off the block's
+    // motion. Taken as a point off the motion, the turn ran a line from
+    // there to the block's end that counts less than the curve and the
+    // block left (fuzz contour seed 12004916: 6.4e-5 mm, DPS-1).
+    const double fraction = stop.front_length > 0 ? stop.s / stop.front_length : 0.0;
+    stop.curve = part->joint;
+    stop.curve_s = part->reversed ? part->to - (part->to - part->from) * fraction
+                                  : part->from + (part->to - part->from) * fraction;
+    stop.curve_reversed = part->reversed;
   }
   double covered = 0;
   if (stop.front_length > 0) {
@@ -143,7 +153,11 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
       }
     }
     plan_ = block_profile(state, length, v_end, st.lim, st.slope);
-    plan_meets_end_ = plan_.end().v <= v_end + 1e-9 * (1 + v_end);
+    // Met only on the stretch's end: a plan that brakes a to 0 beyond it
+    // reaches v_end there, past the transition it had to keep (fuzz seed
+    // 12016401: 1.57 mm beyond, X's acceleration 24,512 for 2,000).
+    plan_meets_end_ =
+        plan_.end().v <= v_end + 1e-9 * (1 + v_end) && plan_.end().p <= length + 1e-9 * (1 + length);
     if (plan_meets_end_) break;
     Stretch longer = look_ahead_.stretch(state.v, through);
     if (longer.length <= st.length) break;  // nothing to run through

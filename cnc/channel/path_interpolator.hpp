@@ -205,6 +205,9 @@ class PathInterpolator {
     // a lift positioning since the last motion block): restart_here() pushes
     // it again so (fuzz lift seed 2359: an M16 passed at 18 mm/s).
     bool block_stop = false;
+    // A part of a curve too short to tell apart from its chord (10 nm),
+    // pushed as that chord: a stop on it stands on the curve (leave_front).
+    std::optional<CurvePart> chord_of = std::nullopt;
   };
   PushedMotion whole_block(size_t k) const;
   // The rest of block k from the stop the way the path now travels.

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <initializer_list>
 #include <string>
 
 #include "channel_fuzz.hpp"
@@ -31,6 +32,17 @@ void check_minimized(uint64_t seed, const std::string& program, int64_t chaos_cy
   options.insert_stops = false;
   const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(seed, options);
   for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+}
+
+// Runs the seeds of one program kind as the fuzz did (every PLC action).
+void check_seeds(fuzz::ProgramKind kind, std::initializer_list<uint64_t> seeds) {
+  fuzz::FuzzOptions options;
+  options.kind = kind;
+  for (uint64_t seed : seeds) {
+    const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(seed, options);
+    INFO("seed " << seed << ": " << (run.failures.empty() ? "" : fuzz::describe(run, run.failures[0])));
+    CHECK(run.passed());
+  }
 }
 
 // Runs `scenario` in a child: "" if it returned true, else what went wrong.
@@ -382,11 +394,66 @@ TEST_CASE("LIFT-2 LIFT-3 the lift fuzz seeds that broke the lift axis' jerk limi
   // came to rest; 81: Lifting's jerk budget; 6000212: a curve across a range
   // without path motion (421,461 mm/s^3); 6000474: the lift and the path
   // waited for each other (no end in 58,565 cycles).
-  hil::fuzz::FuzzOptions options;
-  options.kind = hil::fuzz::ProgramKind::lift;
-  for (uint64_t seed : {9u, 30u, 81u, 110u, 124u, 130u, 214u, 246u, 444u, 6000212u, 6000474u}) {
-    const hil::fuzz::FuzzRun run = hil::fuzz::run_channel_fuzz_isolated(seed, options);
-    INFO("seed " << seed << ": " << (run.failures.empty() ? "" : hil::fuzz::describe(run, run.failures[0])));
-    CHECK(run.passed());
-  }
+  check_seeds(fuzz::ProgramKind::lift, {9, 30, 81, 110, 124, 130, 214, 246, 444, 6000212, 6000474});
+}
+
+TEST_CASE("KRN-3 a plan that reaches a stretch's end velocity only beyond its end has not met it", "[channel][fuzz]") {
+  // N, issue 33's fresh seeds: where even ramping a to 0 passes the
+  // stretch's end, block_profile arrives beyond it; that plan reached v_end
+  // 1.57 mm past the transition it had to keep and was taken as meeting it.
+  // Steps 12016401: X's acceleration 24,512 mm/s^2 for 2,000; arcs 12010998:
+  // 1.8e6 mm/s^3 on a G02; mixed 12013039: 386,191 mm/s^3.
+  check_seeds(fuzz::ProgramKind::steps, {12016401});
+  check_seeds(fuzz::ProgramKind::arcs, {12010998});
+  check_seeds(fuzz::ProgramKind::mixed, {12013039});
+}
+
+TEST_CASE("ISC-3 ISC-6 KRN-3 insert stop commands every few cycles for minutes: a split no stop needs is joined again",
+          "[channel][fuzz]") {
+  // O, issue 33's fresh seeds: restart_here() pushed every part an insert
+  // stop had ever split a block into again, so stops commanded every few
+  // cycles added splits for good; the look-ahead grew to ~1,100 pieces and
+  // the program never ended (arcs 12010265, lift 12012180: no end in 120 s).
+  check_seeds(fuzz::ProgramKind::arcs, {12010265});
+  check_seeds(fuzz::ProgramKind::lift, {12012180});
+  // Contour 12006824 (dist_prog_start 2.7e-5 mm backwards while moving
+  // forward) passes since N, O and P; not traced to one of them.
+  check_seeds(fuzz::ProgramKind::contour, {12006824});
+}
+
+TEST_CASE("DPS-3 KRN-3 a search by distance to within round-off of a block's end: the approach ends on that end",
+          "[channel][contour][fuzz]") {
+  // P, issue 33: after a reset the search continued 0.4 pm before its
+  // block's end; nothing was left of the block, and the approach leg ended
+  // on the continuation point while the next block began on the end: a jump
+  // of 4e-10 mm, 40,000.43 mm/s^3 for 40,000 (contour 7000444, 12001270,
+  // 12005224; lift 12009117, 12012545: 1.00001 x j_max).
+  check_seeds(fuzz::ProgramKind::contour, {7000444, 12001270, 12005224});
+  check_seeds(fuzz::ProgramKind::lift, {12009117, 12012545});
+}
+
+TEST_CASE("DPS-1 KRN-6 a turn on the chord of a curve's tiny rest counts on along the curve",
+          "[channel][contour][fuzz]") {
+  // Q, issue 33: a turn on a curve left a rest under 10 nm, pushed as its
+  // chord; a turn on that chord took it for a point off the block's motion
+  // and ran a line from there to the block's end, which counts less than
+  // the curve and the block it replaces. Contour 12004916 (feed hold, the
+  // random PLC turning the path ~20 times on one curve) ended 6.4e-5 mm
+  // short of the program's 166.1318678 mm; 6531 (insert stops) 4.9e-6 mm
+  // beyond it.
+  check_seeds(fuzz::ProgramKind::contour, {12004916, 6531});
+}
+
+TEST_CASE("LIFT-2 LIFT-3 LIFT-8 fresh lift seeds: a landing in time while the path brakes to a lower override, and "
+          "Lifting's caps by the lift axis' true largest speed",
+          "[channel][lift][fuzz]") {
+  // Issue 33's fresh lift seeds 13,000,000 ..: 13005122 (Advanced
+  // Lifting): the override fell from 101.4 % to 1.1 % in a full circle; the
+  // path's time to the range's end was taken at the programmed velocity at
+  // 1.1 % while the path still braked from 21 mm/s, Z landed a cycle after
+  // the path had left the range (error "left the lift range before the lift
+  // axis had landed"). 13010605 (Lifting): the caps were sized by a largest
+  // lift speed of 38.5 mm/s where the profile peaks at 76 mm/s inside a
+  // phase: 30,248 mm/s^3 for 30,000.
+  check_seeds(fuzz::ProgramKind::lift, {13005122, 13010605});
 }

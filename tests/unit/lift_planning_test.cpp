@@ -77,6 +77,21 @@ TEST_CASE("LIFT-3 LIFT-4: the planned lift rises as high as its time allows and 
     CHECK(p.at(positioning_time(10, 40, lim)).p == Approx(40));
     CHECK(p.at(2.0).p == Approx(40));
   }
+  SECTION("its largest speed is the profile's, also where it peaks inside a phase") {
+    // Fuzz lift seed 13010605: 7.33 -> 18.35 mm with a_max 1500, j_max
+    // 15,000: no cruise, the acceleration runs from +a to -a in one phase;
+    // phase ends alone said 38.5 mm/s of 76 mm/s, and Lifting's caps, sized
+    // by it, let the lift axis reach 1.008 j_max.
+    const Limits lifting{150, 1500, 15000};
+    for (const double to : {18.348022789, 40.0, 10.5}) {
+      const LiftProfile p = LiftProfile::plan(7.328456424, to, to, 0.82288, lifting);
+      double sampled = 0;
+      for (double tau = 0; tau <= p.duration(); tau += 1e-5) sampled = std::max(sampled, std::abs(p.at(tau).v));
+      INFO("to " << to);
+      CHECK(p.max_speed() >= sampled);
+      CHECK(p.max_speed() == Approx(sampled).epsilon(1e-6));
+    }
+  }
 }
 
 TEST_CASE("LIFT-2 Advanced Lifting lands on POS by the time the path can reach the end, within the overload range",

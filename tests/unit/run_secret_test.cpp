@@ -108,7 +108,8 @@ TEST_CASE("RIG-12 authenticated bus: signed messages of the run are taken, forge
   raw.publish("AXIS_X_STATE", replayed.data(), static_cast<uint32_t>(replayed.size()));
   wire.drain();
   CHECK(taken == std::vector<int64_t>{1});
-  const auto& refused = inbox.ledger().by_channel().at("AXIS_X_STATE");
+  const traffic::Ledger ledger = inbox.ledger();  // merged anew on each call: keep the one read
+  const auto& refused = ledger.by_channel().at("AXIS_X_STATE");
   CHECK(refused.unauthenticated == 2);
   CHECK(refused.foreign_run == 1);
   CHECK_FALSE(inbox.ledger().fails_run());  // refused, not lost: the run's own traffic is all there
