@@ -457,3 +457,27 @@ TEST_CASE("LIFT-2 LIFT-3 LIFT-8 fresh lift seeds: a landing in time while the pa
   // phase: 30,248 mm/s^3 for 30,000.
   check_seeds(fuzz::ProgramKind::lift, {13005122, 13010605});
 }
+
+TEST_CASE("KRN-3 KRN-6 a block after a dwell that follows an arc: the arc keeps its jerk, the path stops for the dwell",
+          "[channel][contour][fuzz]") {
+  // T, issue 33's fresh contour seeds: N60 G02 .. / N70 #TIME 0.003 / N80
+  // G01 ..: the look-ahead halved the arc's path jerk for the curvature
+  // step into N80 when N80 came in, after the path had entered the arc at
+  // the speed from which it could stop at full jerk; at half it could not,
+  // the plan ran through the dwell at 15.5 mm/s (X 82,623 mm/s^3 for
+  // 40,000). At a stop there is no curvature step to pass (13009555).
+  check_seeds(fuzz::ProgramKind::contour, {13009555});
+}
+
+TEST_CASE("DPS-1 KRN-6 dist_prog_start on contouring curves at arcs of 0.075 mm radius and less grows with the chord",
+          "[.][known-bug][channel][contour]") {
+  // Open (docs/FUZZ.md M and U): a curve counts the programmed distance of
+  // the block parts it replaces (DPS-1: the blocks' lengths); at tight
+  // arcs it is longer than them, so dist_prog_start grows up to 0.16 % less
+  // than the chord the axes move, where the fuzz allows contoured programs
+  // 0.1 %. Contour 13006359 (G03 of r 0.075 mm, PATH_DEV 0.158), lift
+  // 8001172 (r 5.6 um). Whether the oracle or the map is to change waits
+  // for the path pieces of issue 35, which carry that map.
+  check_seeds(fuzz::ProgramKind::contour, {13006359});
+  check_seeds(fuzz::ProgramKind::lift, {8001172});
+}
