@@ -1,8 +1,6 @@
 #include "channel_fuzz.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstring>
 #include <cmath>
 #include <exception>
 #include <iterator>
