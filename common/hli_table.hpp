@@ -71,6 +71,10 @@
   /* Rising edge of command_w while enable_w acknowledges the M function the CNC */    \
   /* waits for (m_function_request_r). */                                              \
   X(ControlUnitBool, m_function_ack)                                                   \
+  /* The same for an H function, an S (spindle speed) and a T (tool) (KRN-8). */      \
+  X(ControlUnitBool, h_function_ack)                                                   \
+  X(ControlUnitBool, s_function_ack)                                                   \
+  X(ControlUnitBool, t_function_ack)                                                   \
   /* Backward motion on the path (bahn_mc_control.backward_motion, KRN-5), a level; */ \
   /* without P-STUP-00033 a request holds the path until withdrawn (DDTG-10). */       \
   X(ControlUnitBool, backward_motion)                                                  \
@@ -84,7 +88,10 @@
   /* aborted and the channel is READY for a new start (docs/BLOCK_SEARCH.md). */         \
   X(ControlUnitBool, reset)                                                            \
   /* enable_w at the program start's edge: the start searches command_w (DPS-3). */     \
-  X(ControlUnitBlockSearch, block_search)
+  X(ControlUnitBlockSearch, block_search)                                             \
+  /* decoder_mc_control.program_block_ignore (KRN-8): skip levels, bit 0 /1 .. */      \
+  /* bit 9 /10, while enable_w; read by the decoder line by line. */                  \
+  X(ControlUnitUns32, program_block_ignore)
 
 // CNC -> PLC (hli_state_t), once per cycle. HLI lengths in 0.1 um.
 // block_nr_r and block_count_r are UDINT in the texts: int64_t holds them all.
@@ -113,9 +120,20 @@
   X(bool, m_function_request_r)                                                      \
   X(int32_t, m_function_nr_r)                                                        \
   X(int32_t, m_function_add_nr_r)  /* its additional value (insert stop add_nr) */   \
+  /* H<nr>, S<rpm> (with M03 / M04 or while the spindle turns), T<tool>, each */     \
+  /* output and acknowledged the same way (KRN-8); D<nr>: the tool offset in */      \
+  /* force, no handshake. */                                                         \
+  X(bool, h_function_request_r)                                                      \
+  X(int32_t, h_function_nr_r)                                                        \
+  X(bool, s_function_request_r)                                                      \
+  X(double, s_function_value_r)    /* rpm */                                         \
+  X(bool, t_function_request_r)                                                      \
+  X(int32_t, t_function_nr_r)                                                        \
+  X(int32_t, tool_offset_nr_r)                                                       \
   X(ControlUnitState, backward_motion) /* state_r: moving backward */                \
   X(InsertCmdUnitState, insert_cmd)    /* ISC-1, ISC-2 */                            \
   X(ControlUnitState, continue_motion) /* state_r: the edge was taken */             \
   X(ControlUnitState, m01_stop_enable) /* state_r: M01 stops */               \
   X(ControlUnitState, reset)           /* state_r: the edge was taken */       \
-  X(ControlUnitBlockSearchState, block_search) /* DPS-3 */
+  X(ControlUnitBlockSearchState, block_search) /* DPS-3 */                     \
+  X(ControlUnitUns32State, program_block_ignore) /* state_r: skip levels in force */

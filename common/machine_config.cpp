@@ -19,7 +19,8 @@ namespace {
 const std::vector<std::string> machine_keys = {"name", "cycle_time_us", "override_max_percent", "fb_storage_size",
                                                "m_pre_outp", "path_preparation_function", "interpolator_function",
                                                "enable_time_based_lift", "lift_min_dist", "plc_watchdog_cycles",
-                                               "axes"};
+                                               "max_radius_diff_circle", "max_proz_radius_diff_circle",
+                                               "zero_offsets", "axes"};
 const std::vector<std::string> axis_keys = {
     "name", "v_max", "v_rapid", "a_max", "j_max", "kv", "velocity_lag_s", "velocity_loop_order",
     "velocity_damping", "velocity_feedforward", "drive_acceleration_limit", "friction_coulomb", "friction_viscous",
@@ -129,6 +130,23 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
   return axis;
 }
 
+// zero_offsets: {G54: {X: 100, Y: 50}, G55: ..}: mm per axis (KRN-8).
+void read_zero_offsets(const YAML::Node& node, const std::string& where, MachineConfig& config) {
+  if (!node.IsMap()) throw ConfigError(where + ": must map G54 .. G59 to {axis: mm}");
+  const std::vector<std::string> names = {"G54", "G55", "G56", "G57", "G58", "G59"};
+  std::vector<std::string> axis_names;
+  for (const AxisConfig& axis : config.axes) axis_names.push_back(axis.name);
+  const ConfigMap tables(node, where, names);
+  for (size_t k = 0; k < names.size(); ++k) {
+    if (!tables.has(names[k])) continue;
+    const ConfigMap table(tables[names[k]], tables.path(names[k]), axis_names);
+    for (size_t a = 0; a < config.axes.size(); ++a)
+      if (table.has(axis_names[a]))
+        config.zero_offsets[k][a] =
+            config_number(table[axis_names[a]], table.path(axis_names[a]), machine_ranges::position);
+  }
+}
+
 MachineConfig read_machine(const YAML::Node& node) {
   const ConfigMap m(node, "machine", machine_keys);
   MachineConfig config;
@@ -161,6 +179,11 @@ MachineConfig read_machine(const YAML::Node& node) {
   int64_t lift_min_dist = 0;
   m.get("lift_min_dist", lift_min_dist, range::lift_min_dist.min, range::lift_min_dist.max);
   config.lift_min_dist_mm = static_cast<double>(lift_min_dist) / hli_units_per_mm;
+  // KRN-8: the arc end point tolerance, P-CHAN-00171 (0.1 um) and P-CHAN-00172 (0.1 %).
+  int64_t radius_diff = 50;
+  m.get("max_radius_diff_circle", radius_diff, range::max_radius_diff_circle.min, range::max_radius_diff_circle.max);
+  config.max_radius_diff_circle_mm = static_cast<double>(radius_diff) / hli_units_per_mm;
+  m.get("max_proz_radius_diff_circle", config.max_proz_radius_diff_circle, range::max_proz_radius_diff_circle);
   const YAML::Node axes = m["axes"];
   if (!axes || !axes.IsSequence() || axes.size() == 0) throw ConfigError("machine.axes: must be a non-empty list");
   for (size_t i = 0; i < axes.size(); ++i) {
@@ -168,6 +191,8 @@ MachineConfig read_machine(const YAML::Node& node) {
     if (config.axis_index(config.axes.back().name) != static_cast<int>(i))
       throw ConfigError(index_path("machine.axes", i) + ".name: axis " + config.axes.back().name + " is defined twice");
   }
+  for (std::vector<double>& table : config.zero_offsets) table.assign(config.axes.size(), 0.0);
+  if (m.has("zero_offsets")) read_zero_offsets(m["zero_offsets"], m.path("zero_offsets"), config);
   return config;
 }
 

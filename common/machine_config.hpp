@@ -96,7 +96,22 @@ struct MachineConfig {
   double lift_min_dist_mm = 0;
   // Cycles the PLC may leave without an answer before the watchdog error.
   int64_t plc_watchdog_cycles = 20;
+  // How far an arc's end may lie off its circle (G164; KRN-8, error 21758):
+  // P-CHAN-00171 max_radius_diff_circle (the file gives 0.1 um; default 50
+  // = 5 um) or P-CHAN-00172 max_proz_radius_diff_circle (the file gives
+  // 0.1 % of the radius; default 0.1 = 0.01 %), whichever allows more.
+  double max_radius_diff_circle_mm = 0.005;
+  double max_proz_radius_diff_circle = 0.1;  // 0.1 %
+  // G54..G59 (TF5200 "Zero offsets"; the zero offset data's
+  // np_grp[1..6].achse[j].versch, here in mm per machine axis): machine -
+  // program while the G function is in force; G53 (initial) deselects.
+  std::vector<std::vector<double>> zero_offsets = std::vector<std::vector<double>>(6);
   std::vector<AxisConfig> axes;
+
+  double radius_difference_limit(double radius) const {
+    const double relative = max_proz_radius_diff_circle * 1e-3 * radius;
+    return relative > max_radius_diff_circle_mm ? relative : max_radius_diff_circle_mm;
+  }
 
   double cycle_time_s() const { return cycle_time_us * 1e-6; }
   // Index of the axis called `name`, -1 if there is none.

@@ -57,6 +57,8 @@ inline constexpr Whole cycle_time_us{100, 100000};           // 0.1 .. 100 ms
 inline constexpr Whole override_max_percent{100, 200};       // TF5200's override range
 inline constexpr Whole fb_storage_size{0, 4294967295};       // bytes: 0 .. 4 GiB of contour memory
 inline constexpr Whole lift_min_dist{0, 4294967295};         // 0.1 um, an UNS32 (429 m)
+inline constexpr Whole max_radius_diff_circle{0, 10000};    // 0.1 um, P-CHAN-00171 (1 mm)
+inline constexpr Bounds max_proz_radius_diff_circle{0, 500, false, "x 0.1 %"};  // P-CHAN-00172
 inline constexpr Whole watchdog_cycles{1, 100000};           // 100 s at 1 ms
 inline constexpr Whole monitoring_per_mille{1000, 10000};    // P-AXIS-00439 .. 00442: 1 .. 10 x the limit
 

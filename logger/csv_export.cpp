@@ -171,6 +171,13 @@ void columns(Row& r, const hil::hli_state_t& m) {
   r.flag("m_function_request_r", m.m_function_request_r);
   r.integer("m_function_nr_r", m.m_function_nr_r);
   r.integer("m_function_add_nr_r", m.m_function_add_nr_r);
+  r.flag("h_function_request_r", m.h_function_request_r);
+  r.integer("h_function_nr_r", m.h_function_nr_r);
+  r.flag("s_function_request_r", m.s_function_request_r);
+  r.number("s_function_value_r", m.s_function_value_r);
+  r.flag("t_function_request_r", m.t_function_request_r);
+  r.integer("t_function_nr_r", m.t_function_nr_r);
+  r.integer("tool_offset_nr_r", m.tool_offset_nr_r);
   unit(r, "backward_motion", m.backward_motion);
   const auto& insert = m.insert_cmd;
   r.flag("insert_cmd.semaphor_rw", insert.semaphor_rw);
@@ -189,6 +196,8 @@ void columns(Row& r, const hil::hli_state_t& m) {
   r.integer("block_search.state_r.continuation_block_nr", search.state_r.continuation_block_nr);
   r.integer("block_search.state_r.continuation_nc_line", search.state_r.continuation_nc_line);
   r.number("block_search.state_r.continuation_distance_m", search.state_r.continuation_distance * hli_unit_m);
+  r.flag("program_block_ignore.request_r", m.program_block_ignore.request_r);
+  r.integer("program_block_ignore.state_r", m.program_block_ignore.state_r);
 }
 
 void columns(Row& r, const hil::hli_control_t& m) {
@@ -201,6 +210,9 @@ void columns(Row& r, const hil::hli_control_t& m) {
   r.integer("delete_distance_to_go_activation.command_w", m.delete_distance_to_go_activation.command_w);
   r.flag("delete_distance_to_go_activation.enable_w", m.delete_distance_to_go_activation.enable_w);
   unit(r, "m_function_ack", m.m_function_ack);
+  unit(r, "h_function_ack", m.h_function_ack);
+  unit(r, "s_function_ack", m.s_function_ack);
+  unit(r, "t_function_ack", m.t_function_ack);
   unit(r, "backward_motion", m.backward_motion);
   const auto& insert = m.insert_cmd;
   r.number("insert_cmd.command_w.dist_or_pos_m", insert.command_w.dist_or_pos * hli_unit_m);
@@ -218,6 +230,8 @@ void columns(Row& r, const hil::hli_control_t& m) {
   r.integer("block_search.command_w.block_nr", search.command_w.block_nr);
   r.number("block_search.command_w.distance_m", search.command_w.distance * hli_unit_m);
   r.flag("block_search.enable_w", search.enable_w);
+  r.integer("program_block_ignore.command_w", m.program_block_ignore.command_w);
+  r.flag("program_block_ignore.enable_w", m.program_block_ignore.enable_w);
 }
 
 void columns(Row& r, const hil::participant_t& m) {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
+#include <utility>
 #include <sstream>
 
 #include "hli_names.hpp"
@@ -56,17 +58,26 @@ const HliControl& ScenarioEngine::cycle(const HliState& state) {
   // semaphor_rw is one variable the PLC raises and the CNC clears (ISC-1):
   // the PLC's copy follows the CNC's once it has answered.
   control_.insert_cmd.semaphor_rw = state.insert_cmd.semaphor_rw;
-  // The PLC's M function handling: acknowledge with a one-cycle pulse.
+  // The PLC's technology function handling (M, H, S, T; KRN-8):
+  // acknowledge each with a one-cycle pulse.
   if (m_function_ack_cycles_ > 0) {
-    ControlUnitBool& ack = control_.m_function_ack;
-    ack.enable_w = true;
-    if (ack.command_w) {
-      ack.command_w = false;
-    } else if (state.m_function_request_r && ++m_function_waited_ >= m_function_ack_cycles_) {
-      ack.command_w = true;
-      m_function_waited_ = 0;
+    const std::pair<ControlUnitBool*, bool> handshakes[] = {
+        {&control_.m_function_ack, state.m_function_request_r},
+        {&control_.h_function_ack, state.h_function_request_r},
+        {&control_.s_function_ack, state.s_function_request_r},
+        {&control_.t_function_ack, state.t_function_request_r}};
+    for (size_t k = 0; k < std::size(handshakes); ++k) {
+      ControlUnitBool& ack = *handshakes[k].first;
+      const bool requested = handshakes[k].second;
+      ack.enable_w = true;
+      if (ack.command_w) {
+        ack.command_w = false;
+      } else if (requested && ++function_waited_[k] >= m_function_ack_cycles_) {
+        ack.command_w = true;
+        function_waited_[k] = 0;
+      }
+      if (!requested) function_waited_[k] = 0;
     }
-    if (!state.m_function_request_r) m_function_waited_ = 0;
   }
   for (size_t i = 0; i < timeline_.size(); ++i) {
     if (fired_[i] || !timeline_[i].when.holds(state, cycle_time_s_)) continue;

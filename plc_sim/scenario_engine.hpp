@@ -62,7 +62,7 @@ class ScenarioEngine {
   std::vector<Event> seen_events_;
   bool allow_errors_;
   int m_function_ack_cycles_;
-  int m_function_waited_ = 0;  // cycles the current M function has waited
+  int function_waited_[4] = {};  // cycles the current M, H, S, T function has waited
   double cycle_time_s_;
   int64_t last_cycle_ = -1;  // the last HLI state seen
   HliControl control_;

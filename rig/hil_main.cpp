@@ -10,6 +10,7 @@
 #include "export_command.hpp"
 #include "plots.hpp"
 #include "report.hpp"
+#include "program_check.hpp"
 #include "run_log.hpp"
 #include "run_command.hpp"
 #include "run_scenario.hpp"
@@ -96,6 +97,11 @@ int main(int argc, char** argv) {
                     "every node in this process, on direct calls instead of LCM: the same messages and log, "
                     "no network (for suites)");
 
+  std::vector<std::string> validate_files;
+  auto* validate_cmd = app.add_subcommand(
+      "validate", "check scenario files and their NC programs as 'hil run' would, without running them (KRN-8)");
+  validate_cmd->add_option("scenarios", validate_files, "scenario YAML files")->required();
+
   std::string log_file;
   auto* check_cmd = app.add_subcommand("check", "check a recorded log against the limits in its manifest");
   check_cmd->add_option("log", log_file, "LCM event log")->required()->check(CLI::ExistingFile);
@@ -144,6 +150,7 @@ int main(int argc, char** argv) {
   if (*rerun_cmd) return hil::rig::exec_rerun(run.bin_dir, log_file);
   try {
     if (*run_cmd) return hil::rig::run_scenarios(suite, run);
+    if (*validate_cmd) return hil::rig::validate_scenario_files(validate_files);
     if (*check_cmd) return check_log(log_file, plot_dir);
     if (*export_cmd) return hil::rig::export_csv_command(log_file, csv_dir);
     if (*compare_cmd) {

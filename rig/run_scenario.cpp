@@ -20,6 +20,7 @@
 #include "participant.hpp"
 #include "plots.hpp"
 #include "process.hpp"
+#include "program_check.hpp"
 #include "report.hpp"
 #include "run_identity.hpp"
 #include "run_secret.hpp"
@@ -373,7 +374,7 @@ RunSummary summary_of(const std::string& scenario_file, const ScenarioSet& set, 
 
 }  // namespace
 
-RunResult run_scenario(const RunOptions& options) {
+ScenarioSet load_valid_scenario_set(const RunOptions& options) {
   ScenarioSet set = load_scenario_set(options.scenario_file);
   for (ScenarioVariant& v : set.variants) {
     // --realtime goes into the scenario every node reads (RIG-6).
@@ -388,10 +389,16 @@ RunResult run_scenario(const RunOptions& options) {
                         ") needs the processes (docs/REALTIME.md)");
     try {
       validate(v.scenario);
+      check_nc_program(v.scenario);
     } catch (const ConfigError& e) {
       throw ConfigError(options.scenario_file + ": " + e.what() + (v.name.empty() ? "" : " (variant " + v.name + ")"));
     }
   }
+  return set;
+}
+
+RunResult run_scenario(const RunOptions& options) {
+  ScenarioSet set = load_valid_scenario_set(options);
   const std::string run_dir = options.run_dir.empty() ? default_run_dir(set.name) : options.run_dir;
   RunResult result = set.has_variants() ? run_variants(set, run_dir, options)
                                         : run_one(set.variants.front().scenario, run_dir, options, "", nullptr);

@@ -3,6 +3,8 @@
 // lock-step, waits for the end, checks the log offline and reports (RIG-5).
 #include <string>
 
+#include "scenario_set.hpp"
+
 namespace hil::rig {
 
 struct RunOptions {
@@ -32,6 +34,10 @@ struct RunResult {
 // Throws ConfigError for a scenario that cannot run. Leaves report.txt and
 // summary.yaml (run_summary.hpp) in the run folder.
 RunResult run_scenario(const RunOptions& options);
+// The scenario file of `options` loaded and checked as a run needs it: its
+// timeline's HLI fields, the drive models, the NC program decoded as a
+// whole (KRN-8); throws ConfigError naming the file.
+ScenarioSet load_valid_scenario_set(const RunOptions& options);
 
 // "runs/<name>-<YYYYmmdd-HHMMSS>": a run's folder unless --out says.
 std::string default_run_dir(const std::string& name);

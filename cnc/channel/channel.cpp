@@ -44,6 +44,11 @@ void Channel::apply_control(const HliControl& control) {
     update_hold();
   }
   apply_reset(control.reset);
+  // KRN-8: the skip levels in force for the lines the decoder reads from now on.
+  const ControlUnitUns32& ignore = control.program_block_ignore;
+  hli_.program_block_ignore.request_r = ignore.enable_w;
+  hli_.program_block_ignore.state_r = ignore.enable_w ? ignore.command_w : 0;
+  if (program_) program_->set_block_ignore(hli_.program_block_ignore.state_r);
   apply_program_start(control);
 }
 
@@ -110,7 +115,8 @@ void Channel::begin_program_run() {
   hli_.block_search.state_r = BlockSearchState();
   hli_.dist_prog_start = 0;
   hli_.path_velocity = 0;
-  hli_.m_function_request_r = false;
+  hli_.m_function_request_r = hli_.h_function_request_r = hli_.s_function_request_r = hli_.t_function_request_r =
+      false;
   update_hold();
 }
 
@@ -120,6 +126,7 @@ void Channel::start_program(const ControlUnitBlockSearch& search) {
   lift_->begin_program();
   program_ = std::make_unique<ProgramStream>(nc_program_, machine_, start_position,
                                              [this](LiftRange range) { lift_->add_range(std::move(range)); });
+  program_->set_block_ignore(hli_.program_block_ignore.state_r);
   hli_.block_search.state_r = BlockSearchState();
   if (search.enable_w && !search_continuation(search)) {
     take_stream_events();
@@ -149,7 +156,7 @@ void Channel::take_stream_events() {
 }
 
 void Channel::run_path(const HliControl& control, double t) {
-  if (actions_.run(control.m_function_ack, t, hli_)) update_hold();
+  if (actions_.run(control, t, hli_)) update_hold();
   // M<n> of an insert stop mark acknowledged (ISC-5).
   if (insert_->at_mark() && !programmed_stop_.stopped() && !actions_.waiting()) leave_insert_mark(t);
   interpolate(t);

@@ -35,6 +35,8 @@ class ProgramStream {
   BlockSearchOutcome search(const BlockSearchRequest& request, size_t& continuation_index);
   // What the interpolator reads.
   BlockSource& blocks() { return *lift_; }
+  // The PLC's program_block_ignore: skip levels for the lines decoded from now on (KRN-8).
+  void set_block_ignore(uint32_t levels) { decoder_->set_block_ignore(levels); }
 
   // Blocks its stages hold.
   size_t blocks_held() const { return decoder_->blocks_held() + pre_output_->blocks_held() + lift_->blocks_held(); }

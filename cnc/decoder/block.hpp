@@ -1,6 +1,7 @@
 #pragma once
 // What the decoder hands on: one entry per NC program line that commands
 // something (KRN-1). Positions are absolute, in machine axis order, mm.
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -18,8 +19,11 @@ struct Motion {
   MotionType type = MotionType::linear;
   AxisValues start;     // mm, per machine axis
   AxisValues end;       // mm, per machine axis
-  double center_x = 0;  // mm, absolute arc centre (G02/G03, XY plane)
-  double center_y = 0;
+  // G02/G03: the machine axes of the plane (G17 X Y, G18 Z X, G19 Y Z; the
+  // first to the second is counter-clockwise, G03), -1: X and Y. Axes
+  // outside it move linearly along the arc (a helix).
+  std::array<int, 2> plane{-1, -1};
+  std::array<double, 2> center{};  // mm, the absolute arc centre on the plane's axes
   double feed = 0;      // mm/s (programmed F is mm/min), the F in force; G00 moves at rapid
   // The lift function's caps on the path in a lift range (LIFT-2, LIFT-3):
   // velocity so that the lift axis makes its target in time, and (path-based)
@@ -54,12 +58,19 @@ struct ContourMode {
   double dist = 0;         // mm, DIST: distance of the curve's ends from the corner
 };
 
-// An M function of a line (MVS_SVS), and how far along the path before its
-// line it is to be output (path-related pre-output, P-CHAN-00070), mm.
+// A technology function of a line for the PLC (MVS_SVS): M<nr>, H<nr>,
+// T<nr>, S<value> (rpm; with M03 / M04 or while the spindle turns) or
+// D<nr> (the tool offset, shown on the HLI without a handshake), KRN-8;
+// and how far along the path before its line an M function is to be
+// output (path-related pre-output, P-CHAN-00070), mm.
 struct MFunction {
   int nr = 0;
   double pre_output_mm = 0;
-  bool operator==(const MFunction& other) const { return nr == other.nr && pre_output_mm == other.pre_output_mm; }
+  char address = 'M';
+  double value = 0;  // S: rpm
+  bool operator==(const MFunction& other) const {
+    return nr == other.nr && pre_output_mm == other.pre_output_mm && address == other.address && value == other.value;
+  }
 };
 
 // A stop mark (ISC-1, ISC-8): where and how, as the insert command unit's

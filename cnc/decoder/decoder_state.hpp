@@ -17,8 +17,12 @@
 
 namespace hil::cnc::decoding {
 
+// The plane of G02/G03 (KRN-8): G17 X Y (initial), G18 Z X, G19 Y Z.
+enum class Plane : uint8_t { g17, g18, g19 };
+
 struct ModalState {
   MotionType motion = MotionType::linear;
+  Plane plane = Plane::g17;
   bool absolute = true;  // G90
   double feed = 0;       // mm/s
   SlopeType slope = SlopeType::trapez;
@@ -28,6 +32,7 @@ struct ModalState {
   // end what they name (KRN-6).
   BlockTransition transition = BlockTransition::standard;
   ContourMode contour;  // #CONTOUR MODE [..]
+  bool inch = false;    // G70; G71 (mm) is the initial state (KRN-8)
 };
 
 // A lift range that has begun and not ended (LIFT-1, LIFT-5).
@@ -44,6 +49,7 @@ struct LineBuffers {
   std::string code;                                // a line without its comments, if it had any
   std::vector<Word> words;                         // the line's words, viewing the line or `code`
   std::vector<std::optional<double>> axis_words;   // per machine axis
+  std::string dwell;                               // G04 <s> written as G04 X<s>
 };
 
 struct DecoderState {
@@ -51,7 +57,8 @@ struct DecoderState {
       : machine(machine_config),
         position(std::move(start)),
         pre_output_mm(machine.m_pre_output_mm),
-        offset(position.size(), 0.0) {
+        offset(position.size(), 0.0),
+        reference_point_offset(position.size(), 0.0) {
     for (size_t a = 0; a < machine.axes.size(); ++a)
       if (machine.axes[a].name.size() == 1) {
         const char c = machine.axes[a].name[0];
@@ -70,7 +77,14 @@ struct DecoderState {
   AxisValues position;                 // machine coordinates
   ParameterValues parameters;          // P parameters
   std::map<int, double> pre_output_mm;  // M function pre-output (P-CHAN-00070, V.G.M_FCT[m].PRE_OUTP_PATH), mm
-  AxisValues offset;                   // G92: machine - program
+  // machine - program: the zero offset G54..G59 in force and G92's
+  // reference point offset (update_offset).
+  AxisValues offset;
+  AxisValues reference_point_offset;   // G92, mm per axis
+  int zero_offset = 0;                 // 0: G53 (none, the initial state), 1..6: G54..G59
+  bool spindle_turning = false;        // M03 / M04; M05 (initial) stops it
+  std::optional<double> spindle_speed; // rpm, the last S
+  uint32_t block_ignore = 0;           // the PLC's program_block_ignore: skip levels in force (bit 0: /1)
   std::optional<CoordinateSystem> cs;  // #CS ON
   ModalState modal;
   std::optional<LiftRange> lift;
@@ -80,6 +94,14 @@ struct DecoderState {
     return table;
   }();
   LineBuffers buffers;
+
+  void update_offset() {
+    for (size_t a = 0; a < offset.size(); ++a)
+      offset[a] = reference_point_offset[a] +
+                  (zero_offset > 0 && a < machine.zero_offsets[zero_offset - 1].size()
+                       ? machine.zero_offsets[zero_offset - 1][a]
+                       : 0.0);
+  }
 
   // The V.G. variables an expression of this line reads.
   VariableValues variables() const { return {{"V.G.LIFT_ACTIVE", lift ? 1.0 : 0.0}}; }

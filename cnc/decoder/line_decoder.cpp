@@ -1,10 +1,13 @@
 #include "line_decoder.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <iomanip>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "g_functions.hpp"
 #include "lift_commands.hpp"
 #include "line_cursor.hpp"
 #include "motion_target.hpp"
@@ -20,25 +23,62 @@ namespace {
 struct BlockWords {
   explicit BlockWords(std::vector<std::optional<double>>& axis_words) : axes(axis_words) {}
   std::vector<std::optional<double>>& axes;  // per machine axis (DecoderState::buffers, refilled)
-  std::optional<double> i, j;               // arc centre
+  ArcWords arc;                             // I J K R
   std::optional<MotionType> motion;         // G00..G03 of this block
   bool position_preset = false;             // G92: the axis words name the current position
   std::optional<int> transition;            // G60, G61, G260, G261, G359 or G360 (KRN-6)
   std::optional<int> run;                   // G74 (homing) or G100 (measurement): this block only
+  bool dwell = false;                       // G04: X is the dwell time (KRN-8)
+  std::optional<double> dwell_s;            // G04 X<s> or G04 <s>
+  std::optional<int> zero_offset;           // G53 (0), G54..G59 (1..6)
+  std::vector<int> g_codes;                 // every G of the block, for G04's "alone"
 };
+
+// G70: inch. Lengths of the linear axes, I J K R and F (inch/min) scale;
+// rotary axes (A B C) keep degrees.
+constexpr double mm_per_inch = 25.4;
+bool is_rotary(const AxisConfig& axis) {
+  return axis.modulo || (!axis.name.empty() && (axis.name[0] == 'A' || axis.name[0] == 'B' || axis.name[0] == 'C'));
+}
+
+// The letters TwinCAT names axes with ("Axis names": A B C U V W X Y Z Q):
+// one of them that is no axis here is "not an axis of this machine"; any
+// other unknown letter is no word of the dialect at all (KRN-8).
+bool names_axes(char letter) {
+  return letter == 'A' || letter == 'B' || letter == 'C' || (letter >= 'U' && letter <= 'Z') || letter == 'Q';
+}
 
 int axis_of(const Word& w, const DecoderState& state) {
   const int axis = state.axis_of_letter(w.letter);
-  if (axis < 0) throw LineError{"'" + w.text() + "': " + w.letter + " is not an axis of this machine"};
-  return axis;
+  if (axis >= 0) return axis;
+  if (names_axes(w.letter)) throw LineError{"'" + w.text() + "': " + w.letter + " is not an axis of this machine"};
+  if (w.letter == 'E') throw LineError{"'" + w.text() + "': E (feed at block end) is not supported by this rig"};
+  if (w.letter == 'L') throw LineError{"'" + w.text() + "': L (subroutine call) is not supported by this rig"};
+  if (w.letter == 'P')
+    throw LineError{"'" + w.text() + "': a P parameter is set by P<n> = <expression>; words do not read it yet"};
+  throw LineError{"'" + w.text() + "': " + w.letter + " is not a word of the TwinCAT dialect"};
 }
 
-// Modal G codes act at once; the motion G code waits for G92's check.
+// Modal G codes act at once (G70 / G71 before the block's other words);
+// the motion G code waits for G92's check.
 void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
   const int g = static_cast<int>(integer_code(w, max_g_code));
+  programmed.g_codes.push_back(g);
   if (g <= 3) {
     if (programmed.motion) throw LineError{"two motion G codes in one block"};
     programmed.motion = static_cast<MotionType>(g);
+  } else if (g == 4) {
+    programmed.dwell = true;
+  } else if (g >= 17 && g <= 19) {
+    modal.plane = static_cast<Plane>(g - 17);
+  } else if (g == 40) {
+    // Tool radius compensation off: the rig never has it on.
+  } else if (g >= 53 && g <= 59) {
+    if (programmed.zero_offset) throw LineError{"two zero offsets G53..G59 in one block"};
+    programmed.zero_offset = g - 53;
+  } else if (g == 70 || g == 71 || g == 94) {
+    // G70 / G71: read before the other words (apply_words); G94 (feed per
+    // minute) is the rig's only feed mode.
   } else if (g == 90 || g == 91) {
     modal.absolute = g == 90;
   } else if (g == 92) {
@@ -61,11 +101,13 @@ void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
     if (g == 260 && modal.transition == BlockTransition::contour) modal.transition = BlockTransition::standard;
     if (g == 359 && modal.transition == BlockTransition::exact_stop) modal.transition = BlockTransition::standard;
   } else {
-    throw LineError{"G code '" + w.text() + "' is not supported yet"};
+    throw LineError{refused_g_function_message(g), 20131};
   }
 }
 
-void add_m_function(const Word& w, const DecoderState& state, Block& block) {
+// M03 / M04 / M05 switch the spindle (TF5200 "Spindle"): S goes out with
+// M03 / M04 or while the spindle turns; under M05 it is only kept.
+void add_m_function(const Word& w, DecoderState& state, Block& block) {
   const int m = static_cast<int>(integer_code(w, max_m_function));
   if (m == 30) {
     block.program_end = true;
@@ -76,19 +118,46 @@ void add_m_function(const Word& w, const DecoderState& state, Block& block) {
     block.programmed_stop = m;
     return;
   }
+  if (m == 3 || m == 4 || m == 5) {
+    const bool other = std::any_of(block.m_functions.begin(), block.m_functions.end(), [](const MFunction& f) {
+      return f.address == 'M' && (f.nr == 3 || f.nr == 4 || f.nr == 5);
+    });
+    if (other) throw LineError{"'" + w.text() + "': one of M03 / M04 / M05 in a block"};
+    const bool starts = m != 5 && !state.spindle_turning;
+    state.spindle_turning = m != 5;
+    // The speed kept under M05 goes out with the start, before the M function.
+    if (starts && state.spindle_speed &&
+        std::none_of(block.m_functions.begin(), block.m_functions.end(), [](const MFunction& f) { return f.address == 'S'; }))
+      block.m_functions.push_back({0, 0, 'S', *state.spindle_speed});
+  }
   const auto pre_output = state.pre_output_mm.find(m);
   block.m_functions.push_back({m, pre_output == state.pre_output_mm.end() ? 0.0 : pre_output->second});
 }
 
+// S<rpm>, T<tool>, D<offset>, H<nr>: technology functions for the PLC in
+// the block's order (KRN-8), before the block's motion (MVS_SVS).
+void add_technology_word(const Word& w, DecoderState& state, Block& block) {
+  if (w.letter == 'S') {
+    if (!(w.value >= 0 && w.value <= max_spindle_speed))
+      throw LineError{"'" + w.text() + "': the spindle speed S must be 0 .. " +
+                      std::to_string(static_cast<int64_t>(max_spindle_speed)) + " rpm"};
+    state.spindle_speed = w.value;
+    if (state.spindle_turning) block.m_functions.push_back({0, 0, 'S', w.value});
+    return;
+  }
+  const int nr = static_cast<int>(integer_code(w, max_m_function));
+  block.m_functions.push_back({nr, 0, w.letter});
+}
+
 // F in mm/min, within [min_feed_mm_min, max_feed_mm_min].
-double feed_mm_s(const Word& w) {
-  if (!(w.value >= min_feed_mm_min && w.value <= max_feed_mm_min)) {
+double feed_mm_s(const Word& w, double unit) {
+  if (!(w.value * unit >= min_feed_mm_min && w.value * unit <= max_feed_mm_min)) {
     std::ostringstream msg;
     msg << std::setprecision(10) << "feed '" << w.text() << "' is out of range " << min_feed_mm_min << " .. "
         << max_feed_mm_min << " mm/min";
     throw LineError{msg.str()};
   }
-  return w.value / 60.0;
+  return w.value * unit / 60.0;
 }
 
 void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& programmed, Block& block) {
@@ -96,20 +165,29 @@ void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& prog
     decode_axis_command(w, axis_of(w, state), state, block);
     return;
   }
+  const double unit = state.modal.inch ? mm_per_inch : 1.0;
   switch (w.letter) {
     case 'N':
       if (!first) throw LineError{"'" + w.text() + "' must be the first word of the block"};
       block.block_nr = integer_code(w, max_block_nr);
       break;
     case 'G': apply_g_code(w, state.modal, programmed); break;
-    case 'F': state.modal.feed = feed_mm_s(w); break;
+    case 'F': state.modal.feed = feed_mm_s(w, unit); break;
     case 'M': add_m_function(w, state, block); break;
-    case 'I': programmed.i = checked_length(w.value, "I"); break;
-    case 'J': programmed.j = checked_length(w.value, "J"); break;
+    case 'S': case 'T': case 'D': case 'H': add_technology_word(w, state, block); break;
+    case 'I': programmed.arc.i = checked_length(w.value * unit, "I"); break;
+    case 'J': programmed.arc.j = checked_length(w.value * unit, "J"); break;
+    case 'K': programmed.arc.k = checked_length(w.value * unit, "K"); break;
+    case 'R': programmed.arc.r = checked_length(w.value * unit, "R"); break;
     default: {
+      if (programmed.dwell && w.letter == 'X' && !programmed.dwell_s) {  // G04 X<s>: the first main axis' letter
+        programmed.dwell_s = w.value;
+        break;
+      }
       const int axis = axis_of(w, state);
       if (programmed.axes[axis]) throw LineError{std::string("axis ") + w.letter + " programmed twice"};
-      programmed.axes[axis] = checked_length(w.value, std::string_view(&w.letter, 1));
+      const double scale = is_rotary(state.machine.axes[axis]) ? 1.0 : unit;
+      programmed.axes[axis] = checked_length(w.value * scale, std::string_view(&w.letter, 1));
     }
   }
 }
@@ -117,17 +195,42 @@ void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& prog
 BlockWords apply_words(const std::vector<Word>& words, DecoderState& state, Block& block) {
   BlockWords programmed(state.buffers.axis_words);
   programmed.axes.assign(state.machine.axes.size(), std::nullopt);
+  // G70 / G71 act on the block's own words, wherever they stand in it;
+  // G04 makes its X the time.
+  for (const Word& w : words) {
+    if (w.letter != 'G' || w.is_axis_command()) continue;
+    if (w.value == 70 || w.value == 71) state.modal.inch = w.value == 70;
+    if (w.value == 4) programmed.dwell = true;
+  }
   for (size_t k = 0; k < words.size(); ++k) apply_word(words[k], k == 0, state, programmed, block);
   return programmed;
 }
 
-// G92: the current position gets the programmed coordinates; nothing moves.
+// G92: the reference point offset, an additive zero offset (TF5200 "G92"):
+// G90 sets it, G91 adds to it; nothing moves. After G92 X10, X0 is X10.
 void preset_position(const BlockWords& programmed, DecoderState& state) {
-  if (programmed.motion || programmed.run || programmed.i || programmed.j)
+  if (programmed.motion || programmed.run || programmed.arc.any())
     throw LineError{"G92 must not be combined with motion"};
   if (state.cs) throw LineError{"G92 while a #CS is active is not supported yet"};
-  for (size_t a = 0; a < programmed.axes.size(); ++a)
-    if (programmed.axes[a]) state.offset[a] = state.position[a] - *programmed.axes[a];
+  for (size_t a = 0; a < programmed.axes.size(); ++a) {
+    if (!programmed.axes[a]) continue;
+    state.reference_point_offset[a] = checked_length(
+        (state.modal.absolute ? 0.0 : state.reference_point_offset[a]) + *programmed.axes[a], "G92 offset");
+  }
+  state.update_offset();
+}
+
+// G04 X<s> / G04 <s>: a dwell, alone in its block but for the N number
+// (TF5200 "Dwell time"; errors 20685, 20013).
+void decode_dwell(const BlockWords& programmed, const std::vector<Word>& words, Block& block) {
+  if (!programmed.dwell_s) throw LineError{"G04 needs the dwell time: G04 X<s> or G04 <s>", 20685};
+  const bool alone = std::all_of(words.begin(), words.end(), [](const Word& w) {
+    return w.letter == 'N' || w.letter == 'X' || (w.letter == 'G' && w.value == 4);
+  });
+  if (!alone) throw LineError{"G04 must stand alone in its block (after the N number)", 20685};
+  if (!(*programmed.dwell_s > 0 && *programmed.dwell_s <= max_dwell_s))
+    throw LineError{"G04 needs a dwell time > 0 and <= " + std::to_string(static_cast<int64_t>(max_dwell_s)) + " s"};
+  block.dwell_s = *programmed.dwell_s;
 }
 
 // G74 homing run and G100 measurement run: motions ended by an external
@@ -142,7 +245,7 @@ void preset_position(const BlockWords& programmed, DecoderState& state) {
 void decode_run(const BlockWords& programmed, DecoderState& state, Block& block) {
   const std::string name = "G" + std::to_string(*programmed.run);
   if (programmed.motion) throw LineError{name + " cannot be combined with G00 / G01 / G02 / G03"};
-  if (programmed.i || programmed.j) throw LineError{"I/J are only allowed with G02/G03"};
+  if (programmed.arc.any()) throw LineError{"I J K R are only allowed with G02/G03"};
   block.not_searchable = name;
   block.short_cut_restriction = ShortCutRestriction::channel_initialisation;
   const bool homing = *programmed.run == 74;
@@ -181,9 +284,8 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
   AxisValues target = programmed_target(programmed.axes, state);
   check_position(target, state.machine, "end point");  // after G91, G92 and #CS: each word may be in range, the sum not
   const bool is_arc = modal.motion == MotionType::arc_cw || modal.motion == MotionType::arc_ccw;
-  const bool has_centre = programmed.i || programmed.j;
-  if (has_centre && !is_arc) throw LineError{"I/J are only allowed with G02/G03"};
-  const bool full_circle = is_arc && has_centre;  // end = start
+  if (programmed.arc.any() && !is_arc) throw LineError{"I J K R are only allowed with G02/G03"};
+  const bool full_circle = is_arc && programmed.arc.any();  // end = start (R: refused there)
   if (target == state.position && !full_circle) return;
   block.has_motion = true;
   Motion& m = block.motion;
@@ -198,7 +300,7 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
   block.contour = modal.contour;
   if (m.type != MotionType::rapid && !(modal.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
   m.feed = modal.feed;  // G00 too: a short cut to its end runs at it (DDTG-2)
-  if (is_arc) set_arc_centre(m, programmed.i, programmed.j, state);
+  if (is_arc) set_arc_centre(m, programmed.arc, state);
   state.position = m.end;
 }
 
@@ -258,13 +360,53 @@ void assign_parameter(std::string_view code, size_t equals, DecoderState& state)
   }
 }
 
+// Block skip (TF5200 "Skipping of NC blocks"): /1 .. /10 at the start of a
+// line name skip levels 1 .. 10 (bits 0x001 .. 0x200); a bare / is level
+// 1. The line is left out while the PLC's program_block_ignore has its
+// level's bit; `first` moves past the mark either way.
+bool skipped(std::string_view code, size_t& first, uint32_t block_ignore) {
+  size_t i = first + 1;
+  int level = 0;
+  while (i < code.size() && code[i] >= '0' && code[i] <= '9' && level <= max_skip_level) level = level * 10 + (code[i++] - '0');
+  if (i == first + 1) level = 1;
+  if (level < 1 || level > max_skip_level)
+    throw LineError{"block skip '/" + std::string(code.substr(first + 1, i - first - 1)) + "': the skip levels are /1 .. /" +
+                    std::to_string(max_skip_level)};
+  first = i;
+  return (block_ignore >> (level - 1)) & 1u;
+}
+
+// G04 <s> (TF5200 "Dwell time"): the time without an address, written as
+// G04 X<s> into `storage` for the words; empty if the line has no such form.
+const std::string& with_dwell_address(std::string_view code, std::string& storage) {
+  storage.clear();
+  LineCursor cursor(code);
+  cursor.skip_block_nr();
+  if (!(cursor.take_keyword("G04") || cursor.take_keyword("G4"))) return storage;
+  cursor.skip_blanks();
+  const std::string_view rest = cursor.rest();
+  if (rest.empty() || !(std::isdigit(static_cast<unsigned char>(rest[0])) || rest[0] == '.')) return storage;
+  storage.assign(code.substr(0, code.size() - rest.size()));
+  storage += 'X';
+  storage += rest;
+  return storage;
+}
+
 }  // namespace
 
 bool decode_line(std::string_view line, int64_t line_nr, int64_t lines_read, DecoderState& state,
                  std::vector<Block>& out) {
-  const std::string_view code = without_comments(line, state.buffers.code);
-  const size_t first = code.find_first_not_of(" \t\r");
+  std::string_view code = without_comments(line, state.buffers.code);
+  size_t first = code.find_first_not_of(" \t\r");
   if (first == std::string::npos || code[first] == '%') return true;  // empty, or the program name
+  if (code[first] == '/') {
+    if (skipped(code, first, state.block_ignore)) return true;
+    first = code.find_first_not_of(" \t\r", first);
+    if (first == std::string::npos) return true;
+  }
+  code = code.substr(first);
+  const std::string& bare_dwell = with_dwell_address(code, state.buffers.dwell);
+  if (!bare_dwell.empty()) code = bare_dwell;
   if (const size_t hash = code.find('#'); hash != std::string::npos) {
     Block block;
     block.nc_line = line_nr;
@@ -289,8 +431,14 @@ bool decode_line(std::string_view line, int64_t line_nr, int64_t lines_read, Dec
   block.block_count = lines_read;
   try {
     const BlockWords programmed = apply_words(words, state, block);
+    if (programmed.zero_offset) {
+      // G53..G59 act from this block on (TF5200 "Zero offsets").
+      state.zero_offset = *programmed.zero_offset;
+      state.update_offset();
+    }
     // G92's M functions (and M30) are the block's, as with any other block.
-    if (programmed.position_preset) preset_position(programmed, state);
+    if (programmed.dwell) decode_dwell(programmed, words, block);
+    else if (programmed.position_preset) preset_position(programmed, state);
     else decode_motion(programmed, state, block);
     finish_lift_block(words, programmed.axes, programmed.position_preset, state, block);
   } catch (...) {

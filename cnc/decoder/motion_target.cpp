@@ -1,6 +1,8 @@
 #include "motion_target.hpp"
 
+#include <array>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <string>
 
@@ -25,28 +27,86 @@ Eigen::Vector3d to_machine(const DecoderState& state, const Eigen::Vector3d& pro
 }
 
 // G165: the nearest centre on the perpendicular bisector of start and end.
-void correct_centre(Motion& m, int x, int y) {
+void correct_centre(Motion& m) {
+  const int x = m.plane[0], y = m.plane[1];
   const double chord_x = m.end[x] - m.start[x], chord_y = m.end[y] - m.start[y];
   const double chord = std::hypot(chord_x, chord_y);
   if (!(chord > 1e-9)) return;  // a full circle (end = start) has no bisector
   const double mid_x = (m.start[x] + m.end[x]) / 2, mid_y = (m.start[y] + m.end[y]) / 2;
   const double nx = -chord_y / chord, ny = chord_x / chord;
-  const double along = (m.center_x - mid_x) * nx + (m.center_y - mid_y) * ny;
-  m.center_x = mid_x + along * nx;
-  m.center_y = mid_y + along * ny;
+  const double along = (m.center[0] - mid_x) * nx + (m.center[1] - mid_y) * ny;
+  m.center[0] = mid_x + along * nx;
+  m.center[1] = mid_y + along * ny;
 }
 
-void check_on_circle(const Motion& m, int x, int y) {
-  const double r_start = std::hypot(m.start[x] - m.center_x, m.start[y] - m.center_y);
-  const double r_end = std::hypot(m.end[x] - m.center_x, m.end[y] - m.center_y);
+void check_on_circle(const Motion& m, const DecoderState& state) {
+  const int x = m.plane[0], y = m.plane[1];
+  const double r_start = std::hypot(m.start[x] - m.center[0], m.start[y] - m.center[1]);
+  const double r_end = std::hypot(m.end[x] - m.center[0], m.end[y] - m.center[1]);
   if (r_start < 1e-6) throw LineError{"arc radius is zero"};
   checked_length(r_start, "arc radius");
-  if (std::abs(r_start - r_end) > 1e-3 + 1e-6 * r_start) {
+  const double limit = state.machine.radius_difference_limit(r_start);
+  if (std::abs(r_start - r_end) > limit) {
     std::ostringstream msg;
-    msg << "arc end point does not lie on the circle (start radius " << r_start << " mm, end radius " << r_end
-        << " mm; G165 corrects the centre)";
+    msg << std::setprecision(10) << "maximum difference between radii exceeded: start radius " << r_start
+        << " mm, end radius " << r_end << " mm differ by " << std::abs(r_start - r_end) << " mm, more than the "
+        << limit << " mm P-CHAN-00171 max_radius_diff_circle / P-CHAN-00172 max_proz_radius_diff_circle allow"
+        << " (the end point lies off the circle; G165 corrects the centre)";
+    throw LineError{msg.str(), 21758};
+  }
+}
+
+// Where a plane's main axes are: G17 X Y, G18 Z X, G19 Y Z, and the
+// normal (main axis numbers, 0 X 1 Y 2 Z).
+struct PlaneAxes {
+  int first, second, normal;
+};
+PlaneAxes plane_axes(Plane plane) {
+  switch (plane) {
+    case Plane::g18: return {2, 0, 1};
+    case Plane::g19: return {1, 2, 0};
+    default: return {0, 1, 2};
+  }
+}
+
+const char* plane_name(Plane plane) { return plane == Plane::g18 ? "G18" : plane == Plane::g19 ? "G19" : "G17"; }
+
+// The main axes of a machine position in program coordinates (G92, #CS),
+// and back.
+Eigen::Vector3d program_point(const DecoderState& state, const AxisValues& machine) {
+  if (state.cs) return to_program(state, machine);
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // a machine without Z: 0
+  for (int k = 0; k < 3; ++k)
+    if (const int a = main_axis(state, k); a >= 0) point[k] = machine[a] - state.offset[a];
+  return point;
+}
+Eigen::Vector3d machine_point(const DecoderState& state, const Eigen::Vector3d& program) {
+  if (state.cs) return to_machine(state, program);
+  Eigen::Vector3d machine = program;
+  for (int k = 0; k < 3; ++k)
+    if (const int a = main_axis(state, k); a >= 0) machine[k] += state.offset[a];
+  return machine;
+}
+
+// R: the centre on the bisector of the chord, on the side that makes the
+// arc at most 180 degrees for R > 0 and more for R < 0 (TF5200 "Circular
+// interpolation").
+Eigen::Vector2d centre_by_radius(const Eigen::Vector2d& start, const Eigen::Vector2d& end, double r, bool ccw,
+                                 const DecoderState& state) {
+  const Eigen::Vector2d chord = end - start;
+  const double half = chord.norm() / 2;
+  if (!(half > 1e-9)) throw LineError{"a full circle cannot be programmed with R: give its centre (I J K)"};
+  const double radius = std::abs(r);
+  if (radius < half - state.machine.radius_difference_limit(radius)) {
+    std::ostringstream msg;
+    msg << std::setprecision(10) << "R" << r << ": the end point lies " << 2 * half
+        << " mm from the start, farther than the diameter " << 2 * radius << " mm";
     throw LineError{msg.str()};
   }
+  const double height = std::sqrt(std::max(0.0, radius * radius - half * half));
+  const Eigen::Vector2d left(-chord.y() / (2 * half), chord.x() / (2 * half));
+  const double side = (ccw ? 1.0 : -1.0) * (r > 0 ? 1.0 : -1.0);
+  return (start + end) / 2 + side * height * left;
 }
 
 }  // namespace
@@ -88,33 +148,48 @@ AxisValues programmed_target(const std::vector<std::optional<double>>& axis_word
   return target;
 }
 
-void set_arc_centre(Motion& m, std::optional<double> i, std::optional<double> j, const DecoderState& state) {
-  const int x = state.machine.axis_index("X"), y = state.machine.axis_index("Y");
-  if (x < 0 || y < 0) throw LineError{"G02/G03 need axes X and Y (plane G17)"};
-  if (!i && !j) throw LineError{"G02/G03 need the centre I/J (R is not supported yet)"};
-  const AxisValues& offset = state.offset;
-  if (state.cs) {
-    if (!state.cs->keeps_xy_plane())
-      throw LineError{"G02/G03 in a #CS rotated out of the XY plane are not supported yet"};
-    const Eigen::Vector3d start = to_program(state, m.start);
-    const Eigen::Vector3d centre =
-        state.modal.centre_absolute
-            ? Eigen::Vector3d(i.value_or(start.x()), j.value_or(start.y()), start.z())
-            : Eigen::Vector3d(start.x() + i.value_or(0), start.y() + j.value_or(0), start.z());
-    const Eigen::Vector3d machine = to_machine(state, centre);
-    m.center_x = machine.x();
-    m.center_y = machine.y();
-  } else if (state.modal.centre_absolute) {  // G161: in program coordinates
-    m.center_x = i.value_or(m.start[x] - offset[x]) + offset[x];
-    m.center_y = j.value_or(m.start[y] - offset[y]) + offset[y];
+void set_arc_centre(Motion& m, const ArcWords& words, const DecoderState& state) {
+  const Plane plane = state.modal.plane;
+  const PlaneAxes axes = plane_axes(plane);
+  const int first = main_axis(state, axes.first), second = main_axis(state, axes.second);
+  if (first < 0 || second < 0)
+    throw LineError{std::string("G02/G03 in ") + plane_name(plane) + " need axes " + "XYZ"[axes.first] + " and " +
+                    "XYZ"[axes.second]};
+  m.plane = {first, second};
+  const std::array<std::optional<double>, 3> centre_words{words.i, words.j, words.k};
+  if (centre_words[axes.normal])
+    throw LineError{std::string("'") + "IJK"[axes.normal] + "' is no centre word in " + plane_name(plane) +
+                    ": its arcs take " + "IJK"[axes.first] + " and " + "IJK"[axes.second]};
+  const bool has_centre = centre_words[axes.first] || centre_words[axes.second];
+  if (words.r && has_centre) throw LineError{"an arc takes its centre (I J K) or its radius R, not both"};
+  if (!words.r && !has_centre)
+    throw LineError{std::string("G02/G03 need the centre ") + "IJK"[axes.first] + " " + "IJK"[axes.second] +
+                    " or the radius R"};
+  if (state.cs && !state.cs->keeps_axis(axes.normal))
+    throw LineError{std::string("G02/G03 in ") + plane_name(plane) +
+                    " in a #CS rotated out of that plane are not supported yet"};
+  const Eigen::Vector3d start = program_point(state, m.start);
+  Eigen::Vector3d centre = start;
+  if (words.r) {
+    const Eigen::Vector3d end = program_point(state, m.end);
+    const Eigen::Vector2d c = centre_by_radius({start[axes.first], start[axes.second]},
+                                               {end[axes.first], end[axes.second]}, checked_length(*words.r, "R"),
+                                               m.type == MotionType::arc_ccw, state);
+    centre[axes.first] = c.x();
+    centre[axes.second] = c.y();
   } else {
-    m.center_x = m.start[x] + i.value_or(0);
-    m.center_y = m.start[y] + j.value_or(0);
+    for (const int k : {axes.first, axes.second}) {
+      if (!centre_words[k]) continue;
+      // G161: the centre in program coordinates; G162: seen from the start.
+      centre[k] = state.modal.centre_absolute ? *centre_words[k] : start[k] + *centre_words[k];
+    }
   }
-  if (state.modal.centre_correction) correct_centre(m, x, y);
-  checked_length(m.center_x, "arc centre X");
-  checked_length(m.center_y, "arc centre Y");
-  check_on_circle(m, x, y);
+  const Eigen::Vector3d machine = machine_point(state, centre);
+  m.center = {machine[axes.first], machine[axes.second]};
+  if (state.modal.centre_correction && !words.r) correct_centre(m);
+  checked_length(m.center[0], std::string("arc centre ") + "XYZ"[axes.first]);
+  checked_length(m.center[1], std::string("arc centre ") + "XYZ"[axes.second]);
+  check_on_circle(m, state);
 }
 
 }  // namespace hil::cnc::decoding

@@ -18,8 +18,17 @@ AxisValues programmed_target(const std::vector<std::optional<double>>& axis_word
 AxisValues programmed_target(const std::vector<std::optional<double>>& axis_words,
                              const DecoderState& state, bool absolute);
 
-// The centre of the G02/G03 motion `m` (start and end set) from I/J
-// (G161/G162, G165); throws LineError if the end is not on the circle.
-void set_arc_centre(Motion& m, std::optional<double> i, std::optional<double> j, const DecoderState& state);
+// What an arc block programs besides its end point: the centre words and
+// the radius.
+struct ArcWords {
+  std::optional<double> i, j, k, r;
+  bool any() const { return i || j || k || r; }
+};
+
+// The plane (G17 / G18 / G19) and centre of the G02/G03 motion `m` (start
+// and end set) from I J K (G161/G162, G165) or R; throws LineError if the
+// end is not on the circle within P-CHAN-00089 (machine file
+// circle_end_point_tolerance).
+void set_arc_centre(Motion& m, const ArcWords& words, const DecoderState& state);
 
 }  // namespace hil::cnc::decoding

@@ -37,6 +37,8 @@ class ProgramDecoder : public BlockSource {
   ProgramDecoder& operator=(const ProgramDecoder&) = delete;
 
   bool next(Block& block) override;
+  // Block skip levels (bit 0: /1) for the lines decoded from now on (KRN-8).
+  void set_block_ignore(uint32_t levels) { state_.block_ignore = levels; }
   // The error that ended the stream; none before it is met.
   const std::optional<Event>& error() const { return error_; }
   // Decoding has ended (M30, the end of the text, or an error).

@@ -26,6 +26,8 @@ constexpr int64_t max_block_nr = 4294967295;  // N: block_nr_r is a UDINT, [0, M
 constexpr int64_t max_g_code = 999;
 constexpr int64_t max_m_function = 2147483647;  // M: m_function_nr_r is a DINT
 constexpr int64_t max_p_parameter = 99999;      // P<n>
+constexpr double max_spindle_speed = 1e6;       // S, rpm
+constexpr int max_skip_level = 10;              // /1 .. /10 (TF5200 "Skipping of NC blocks")
 
 // `value` if |value| <= max_length_mm; else throws LineError naming `what`.
 double checked_length(double value, std::string_view what);

@@ -136,10 +136,10 @@ void PathSegment::set_line_limits(const Motion& m, const MachineConfig& machine)
 // Each term gets a fixed part of the axis limit: the centripetal terms half
 // the acceleration and a third of the jerk, which bounds v, a_t and j_t.
 void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) {
-  ix_ = machine.axis_index("X");
-  iy_ = machine.axis_index("Y");
-  cx_ = m.center_x;
-  cy_ = m.center_y;
+  ix_ = m.plane[0] >= 0 ? m.plane[0] : machine.axis_index("X");
+  iy_ = m.plane[1] >= 0 ? m.plane[1] : machine.axis_index("Y");
+  cx_ = m.center[0];
+  cy_ = m.center[1];
   radius_ = std::hypot(m.start[ix_] - cx_, m.start[iy_] - cy_);
   radius_end_ = std::hypot(m.end[ix_] - cx_, m.end[iy_] - cy_);
   angle0_ = std::atan2(m.start[iy_] - cy_, m.start[ix_] - cx_);

@@ -1,5 +1,5 @@
 #pragma once
-// Geometry of one motion block (line or helical arc in the XY plane) over
+// Geometry of one motion block (line, or helical arc in the G17/G18/G19 plane) over
 // its path length s, and the path limits (velocity, acceleration, jerk)
 // under which every axis stays within its own limits (KRN-3).
 // Path positions s run from 0 at the start to length() at the end.

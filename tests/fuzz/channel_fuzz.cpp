@@ -150,7 +150,8 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   for (const cnc::Block& b : decoded.blocks) {
     if (!b.has_motion) continue;
     if (b.motion.feed > 0) slowest = std::min(slowest, b.motion.feed);
-    const double r = std::hypot(b.motion.start[0] - b.motion.center_x, b.motion.start[1] - b.motion.center_y);
+    const int first = b.motion.plane[0] >= 0 ? b.motion.plane[0] : 0, second = b.motion.plane[1] >= 0 ? b.motion.plane[1] : 1;
+    const double r = std::hypot(b.motion.start[first] - b.motion.center[0], b.motion.start[second] - b.motion.center[1]);
     for (size_t i = 0; i < low.size(); ++i) {
       const double reach = b.motion.type == cnc::MotionType::arc_cw || b.motion.type == cnc::MotionType::arc_ccw ? r : 0;
       low[i] = std::min({low[i], b.motion.end[i] - reach, b.motion.start[i] - reach});

@@ -320,12 +320,13 @@ class Generator {
 
   // The axis words of a move to `want` (G90 absolute, G91 relative) and the
   // position the decoder will compute from them.
-  std::string axis_words(const Vec& want, Vec& got, bool xy = true) {
+  // Axes in `left_out` (bit k: axis k) are not written.
+  std::string axis_words(const Vec& want, Vec& got, int left_out = 0) {
     static const char letters[] = {'X', 'Y', 'Z'};
     std::string words;
     got = pos_;
     for (int k = 0; k < 3; ++k) {
-      if (!xy && k < 2) continue;
+      if ((left_out >> k) & 1) continue;
       if (k == 2 && in_lift_) continue;  // the lift axis is not programmed in a range (LIFT-6)
       const bool changed = want[k] != pos_[k];
       if (!changed && !rng_.chance(0.1)) continue;  // now and then an axis that does not move
@@ -368,29 +369,33 @@ class Generator {
     if (counting_) dps_ += length;
   }
 
-  // G02/G03 with the centre at `centre_offset` from the start, to
-  // `end_angle` (radians about the centre); none: a full circle.
+  // G02/G03 in the plane in force (plane_, KRN-8) with the centre at (i, j)
+  // on its first and second axis from the start, to `end_angle` (radians
+  // about the centre, from the first axis to the second); none: a full
+  // circle. `dz`: the helix's travel on the plane's normal.
   // `quadrant_end`: the end lies exactly on an axis through the centre
-  // (tangent chains), quadrant 0..3 = +X, +Y, -X, -Y.
+  // (tangent chains), quadrant 0..3 = +first, +second, -first, -second.
+  // Now and then by radius R instead of the centre (not a full circle).
   bool arc(bool ccw, double i, double j, std::optional<double> end_angle, double dz, int quadrant_end = -1) {
+    const int a = plane_.first, b = plane_.second, n = plane_.normal;
     const std::string ti = num(i), tj = num(j);
-    const double cx = pos_[0] + read_back(ti), cy = pos_[1] + read_back(tj);
-    const double r = std::hypot(pos_[0] - cx, pos_[1] - cy);
+    double ca = pos_[a] + read_back(ti), cb = pos_[b] + read_back(tj);
+    const double r = std::hypot(pos_[a] - ca, pos_[b] - cb);
     if (r < 1e-4) return false;
-    const double a0 = std::atan2(pos_[1] - cy, pos_[0] - cx);
+    const double a0 = std::atan2(pos_[b] - cb, pos_[a] - ca);
     Vec want = pos_;
-    want[2] += dz;
+    want[n] += dz;
     double sweep = 2 * M_PI, a1 = a0;
     if (end_angle || quadrant_end >= 0) {
       if (quadrant_end >= 0) {
         const double off[4][2] = {{r, 0}, {0, r}, {-r, 0}, {0, -r}};
-        want[0] = cx + off[quadrant_end][0];
-        want[1] = cy + off[quadrant_end][1];
+        want[a] = ca + off[quadrant_end][0];
+        want[b] = cb + off[quadrant_end][1];
         a1 = quadrant_end * M_PI / 2;
       } else {
         a1 = *end_angle;
-        want[0] = cx + r * std::cos(a1);
-        want[1] = cy + r * std::sin(a1);
+        want[a] = ca + r * std::cos(a1);
+        want[b] = cb + r * std::sin(a1);
       }
       sweep = std::fmod(ccw ? a1 - a0 : a0 - a1, 2 * M_PI);
       if (sweep < 0) sweep += 2 * M_PI;
@@ -398,26 +403,58 @@ class Generator {
       // after rounding: not generated (the intended length must be right).
       if (sweep < 0.02 || sweep > 2 * M_PI - 0.02) return false;
     }
+    const bool full = !end_angle && quadrant_end < 0;
     Vec got;
-    std::string words = end_angle || quadrant_end >= 0 ? axis_words(want, got) : axis_words(want, got, false);
-    if (!end_angle && quadrant_end < 0) {  // full circle: X and Y stay
-      got[0] = pos_[0];
-      got[1] = pos_[1];
+    std::string words = full ? axis_words(want, got, (1 << a) | (1 << b)) : axis_words(want, got);
+    if (full) {  // the plane's axes stay
+      got[a] = pos_[a];
+      got[b] = pos_[b];
     }
-    const double r_end = std::hypot(got[0] - cx, got[1] - cy);
-    // The decoder allows 1e-3 mm; the kernel blends the radius along the
-    // arc. Kept at round-off, so that the path is the intended circle.
-    if (std::abs(r - r_end) > 1e-9 * (1 + r)) return false;
+    std::string centre = std::string(" ") + plane_.centre[0] + ti + " " + plane_.centre[1] + tj;
+    // By radius: the decoder's centre lies on the chord's bisector, at R
+    // as written; the sweep is what that circle gives (the oracle's length).
+    if (!full && sweep > 0.1 && sweep < 2 * M_PI - 0.1 && std::abs(sweep - M_PI) > 0.05 && rng_.chance(0.3)) {
+      const std::string tr = num(sweep > M_PI ? -r : r);
+      const double rr = std::abs(read_back(tr));
+      const double ha = (got[a] - pos_[a]) / 2, hb = (got[b] - pos_[b]) / 2, half = std::hypot(ha, hb);
+      if (half > 1e-6 && rr >= half) {
+        const double height = std::sqrt(rr * rr - half * half), side = (ccw ? 1 : -1) * (sweep > M_PI ? -1 : 1);
+        ca = pos_[a] + ha - side * height * hb / half;
+        cb = pos_[b] + hb + side * height * ha / half;
+        const double s0 = std::atan2(pos_[b] - cb, pos_[a] - ca), s1 = std::atan2(got[b] - cb, got[a] - ca);
+        double by_radius = std::fmod(ccw ? s1 - s0 : s0 - s1, 2 * M_PI);
+        if (by_radius < 0) by_radius += 2 * M_PI;
+        if (by_radius > 0.02 && by_radius < 2 * M_PI - 0.02 && std::abs(by_radius - sweep) < 0.1) {
+          centre = " R" + tr;
+          sweep = by_radius;
+        }
+      }
+    }
+    const double r_end = std::hypot(got[a] - ca, got[b] - cb);
+    // The decoder allows P-CHAN-00171's 5 um; the kernel blends the radius
+    // along the arc. Kept at round-off, so that the path is the intended circle.
+    if (std::abs(r - r_end) > 1e-9 * (1 + r) && centre[1] != 'R') return false;
     if (in_lift_) got[2] = pos_[2];
-    const double z = got[2] - pos_[2];
-    const double planar = r * sweep, length = std::hypot(planar, z);
-    emit(std::string(ccw ? "G03" : "G02") + words + " I" + ti + " J" + tj + feed_words() + extra_ + transition_next_);
+    const double z = got[n] - pos_[n];
+    const double planar = (centre[1] == 'R' ? std::hypot(pos_[a] - ca, pos_[b] - cb) : r) * sweep,
+                 length = std::hypot(planar, z);
+    emit(std::string(ccw ? "G03" : "G02") + words + centre + feed_words() + extra_ + transition_next_);
     transition_next_.clear();
     moved(got, length);
     return true;
   }
 
+  // The plane of the next arcs: G17 mostly; G18 / G19 (Z in the plane) not
+  // in a lift range, where Z is the lift axis (LIFT-6).
+  void choose_plane() {
+    const int plane = in_lift_ || !rng_.chance(0.35) ? 17 : rng_.chance(0.5) ? 18 : 19;
+    if (plane == plane_.g) return;
+    plane_ = plane == 17 ? g17 : plane == 18 ? g18 : g19;
+    emit("G" + std::to_string(plane));
+  }
+
   void random_arc(double r, double dz) {
+    choose_plane();
     const double a0 = rng_.uniform(0, 2 * M_PI), sweep = rng_.uniform(0.05, 2 * M_PI - 0.05);
     const bool ccw = rng_.chance(0.5);
     // The centre seen from the start.
@@ -426,6 +463,7 @@ class Generator {
   }
 
   void full() {
+    choose_plane();
     const double r = rng_.log_uniform(0.01, 20), a0 = rng_.uniform(0, 2 * M_PI);
     arc(rng_.chance(0.5), -r * std::cos(a0), -r * std::sin(a0), std::nullopt, rng_.chance(0.3) ? rng_.uniform(-3, 3) : 0);
   }
@@ -434,6 +472,10 @@ class Generator {
   // other: the transitions are tangent, the curvature steps (line <-> arc,
   // S-bends, radius changes); the corner rule's curvature part.
   void chain() {
+    if (plane_.g != 17) {
+      plane_ = g17;
+      emit("G17");
+    }
     // Start along an axis: a short line sets the direction exactly.
     int q = static_cast<int>(rng_.integer(0, 3));  // direction +X, +Y, -X, -Y
     const double unit[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
@@ -583,6 +625,14 @@ class Generator {
   Vec pos_{0, 0, 0};
   bool absolute_ = true;
   bool in_lift_ = false;  // inside a lift range: Z is not programmed
+  // An arc plane: its first and second axis, its normal (0 X, 1 Y, 2 Z) and
+  // centre words (KRN-8).
+  struct ArcPlane {
+    int g, first, second, normal;
+    char centre[2];
+  };
+  static constexpr ArcPlane g17{17, 0, 1, 2, {'I', 'J'}}, g18{18, 2, 0, 1, {'K', 'I'}}, g19{19, 1, 2, 0, {'J', 'K'}};
+  ArcPlane plane_ = g17;
   double lift_pos_ = 0;   // where the open range lands
   double feed_ = 0;  // mm/s
   std::string feed_word_;

@@ -206,12 +206,12 @@ TEST_CASE("DPS-3 G74 before the searched block is phase 1; on the searched block
 TEST_CASE("DPS-3 DPS-2 the text's #DISTANCE PROG START program: distance 450 lies in N230 at X50", "[DPS-3]") {
   const std::string text = std::string("%example\n") + test::dps_example_program;
   const std::vector<Block> blocks = decoded(text);
-  // G92 offsets: the first part at (-33, -55), the second at (-633, -755) in machine coordinates.
+  // G92 offsets (additive, KRN-8): the first part at (33, 55), the second at (600, 700) in machine coordinates.
   for (const int64_t from : {10, 130, 230}) {
     INFO("N" << from);
     const Continuation c = found(search(blocks, from, 450));
     CHECK(blocks[c.block].block_nr == 230);
-    check_position(c.position, {50 - 633, -755, 0});
+    check_position(c.position, {50 + 600, 700, 0});
     CHECK(c.distance_counting);
   }
   const Continuation n140 = found(search(blocks, 140, 100));
@@ -226,7 +226,7 @@ TEST_CASE("DPS-3 DPS-2 the text's #DISTANCE PROG START program: distance 450 lie
   // 400 is where N160 ends and N230 begins: inside N160, at its end.
   const Continuation at_400 = found(search(blocks, 130, 400));
   CHECK(blocks[at_400.block].block_nr == 160);
-  check_position(at_400.position, {-33, -55, 0});
+  check_position(at_400.position, {33, 55, 0});
   // Beyond the program's 800 mm.
   const BlockSearchOutcome beyond = search(blocks, 130, 800.5);
   REQUIRE(beyond.error);
@@ -234,7 +234,7 @@ TEST_CASE("DPS-3 DPS-2 the text's #DISTANCE PROG START program: distance 450 lie
   // The run gives the same: at 450 mm in N230 at program X50.
   const auto run = run_reaching(text, 450);
   CHECK(run.second == 230);
-  CHECK(run.first[0] == Approx(50 - 633).margin(0.1));  // one cycle at F6000
+  CHECK(run.first[0] == Approx(50 + 600).margin(0.1));  // one cycle at F6000
 }
 
 TEST_CASE("DPS-3 #DISTANCE PROG START CLEAR: the count starts again from 0", "[DPS-3]") {

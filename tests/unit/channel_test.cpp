@@ -91,7 +91,7 @@ TEST_CASE("KRN-3 channel: a whole program stays within every axis' limits", "[ch
 
 TEST_CASE("KRN-2 channel: after a decode error the channel runs the good blocks, then stops in error",
           "[channel]") {
-  Channel channel(test::xyz_machine(), "N10 G01 X10 F6000\nN20 Y5\nN30 G17\nN40 X100\nM30\n");
+  Channel channel(test::xyz_machine(), "N10 G01 X10 F6000\nN20 Y5\nN30 G41\nN40 X100\nM30\n");
   channel.step(0, start_command(true));
   const std::vector<Event> events = channel.take_events();
   REQUIRE(events.size() == 1);  // reported when decoding reaches it, at program start

@@ -185,8 +185,8 @@ TEST_CASE("KRN-6 corner distance: PATH_DEV is met at the programmed corner of tw
 TEST_CASE("KRN-3 curvature step: the demo's line into arc joint passes at the hand-computed 19.87 mm/s",
           "[contour]") {
   const MachineConfig m = test::xyz_machine();
-  Motion line{MotionType::linear, {10, 10, -2}, {80, 10, -2}, 0, 0, 50};
-  Motion arc{MotionType::arc_ccw, {80, 10, -2}, {100, 30, -2}, 80, 30, 50};
+  Motion line{MotionType::linear, {10, 10, -2}, {80, 10, -2}, {-1, -1}, {0, 0}, 50};
+  Motion arc{MotionType::arc_ccw, {80, 10, -2}, {100, 30, -2}, {0, 1}, {80, 30}, 50};
   const Junction j = junction(PathSegment(line, m), PathSegment(arc, m), m);
   CHECK(j.curvature_step);
   CHECK(j.v_max == Approx(19.8705).margin(0.001));

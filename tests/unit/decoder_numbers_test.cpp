@@ -128,7 +128,7 @@ std::string violation(const DecodedProgram& p, int64_t lines, size_t axes) {
     if (!positions_in_range(m.start, axes) || !positions_in_range(m.end, axes)) return "start/end out of range";
     if (m.start != position) return "start is not the end of the block before";  // nothing moves unless decoded
     position = m.end;
-    if (!in_range(m.center_x, max_length_mm) || !in_range(m.center_y, max_length_mm)) return "centre";
+    if (!in_range(m.center[0], max_length_mm) || !in_range(m.center[1], max_length_mm)) return "centre";
     // G00 carries the F in force, if any (DDTG-2: a short cut to it runs at it).
     const bool feed_ok = (m.type == MotionType::rapid && m.feed == 0) ||
                          (m.feed >= min_feed_mm_min / 60 && m.feed <= max_feed_mm_min / 60);

@@ -65,14 +65,14 @@ TEST_CASE("KRN-1 decoder: G02/G03 with I/J centre incremental to the start point
   REQUIRE_FALSE(p.error);
   REQUIRE(p.blocks.size() == 4);
   CHECK(p.blocks[1].motion.type == MotionType::arc_ccw);
-  CHECK(p.blocks[1].motion.center_x == Approx(10));
-  CHECK(p.blocks[1].motion.center_y == Approx(10));
+  CHECK(p.blocks[1].motion.center[0] == Approx(10));
+  CHECK(p.blocks[1].motion.center[1] == Approx(10));
   CHECK(p.blocks[2].motion.type == MotionType::arc_cw);
-  CHECK(p.blocks[2].motion.center_x == Approx(10));
-  CHECK(p.blocks[2].motion.center_y == Approx(10));
+  CHECK(p.blocks[2].motion.center[0] == Approx(10));
+  CHECK(p.blocks[2].motion.center[1] == Approx(10));
   // Only I given: a full circle back to the start point.
   CHECK(p.blocks[3].motion.end == p.blocks[3].motion.start);
-  CHECK(p.blocks[3].motion.center_x == Approx(5));
+  CHECK(p.blocks[3].motion.center[0] == Approx(5));
 }
 
 TEST_CASE("KRN-1 decoder: program ends at M30; text after it is not decoded", "[decoder]") {
@@ -87,7 +87,7 @@ TEST_CASE("KRN-2 decoder: an error names its line and block; the blocks before i
     const char* message_part;
   };
   const Case cases[] = {
-      {"N30 G17 X5", "G code 'G17' is not supported yet"},
+      {"N30 G41 X5", "G41 tool radius compensation (left) is not supported by this rig"},
       {"N30 P1 = 2 * P9", "P9 has no value yet"},
       {"N30 P1 = 2 / [1 - 1]", "division by zero"},
       {"N30 X=5", "'=' is only allowed in P<n> = <expression>"},
@@ -97,7 +97,7 @@ TEST_CASE("KRN-2 decoder: an error names its line and block; the blocks before i
       {"N30 X1.2.3", "malformed number"},
       {"N30 X1 X2", "programmed twice"},
       {"N30 G01 G02 X1", "two motion G codes"},
-      {"N30 G02 X30 Y0 I5 J0", "does not lie on the circle"},
+      {"N30 G02 X30 Y0 I5 J0", "maximum difference between radii exceeded"},
       {"N30 #FLUSH X", "#FLUSH takes nothing but WAIT"},
       {"N30 $FOR P1=0,1,1", "$FOR without $ENDFOR"},
       {"N30 $IF P1 == 1", "'$IF' is not supported yet"},
@@ -140,11 +140,11 @@ TEST_CASE("KRN-1 DPS-2 decoder: #DISTANCE PROG START ON/OFF/CLEAR, G92 position 
   CHECK(p.blocks[0].block_nr == 10);
   CHECK(p.blocks[0].distance_prog_start == DistanceProgStart::off);
   CHECK_FALSE(p.blocks[0].has_motion);
-  CHECK(p.blocks[1].block_nr == 40);  // the current position (0, 0) is X33 Y55 of the program
-  CHECK(p.blocks[1].motion.end == std::vector<double>{-33, -55, 0});
+  CHECK(p.blocks[1].block_nr == 40);  // G92 X33 Y55: X0 Y0 of the program is X33 Y55 (additive, KRN-8)
+  CHECK(p.blocks[1].motion.end == std::vector<double>{33, 55, 0});
   CHECK(p.blocks[1].slope == SlopeType::trapez);
   CHECK(p.blocks[2].distance_prog_start == DistanceProgStart::on);
-  CHECK(p.blocks[3].motion.end == std::vector<double>{67, -55, 0});
+  CHECK(p.blocks[3].motion.end == std::vector<double>{133, 55, 0});
   CHECK(p.blocks[3].slope == SlopeType::sin2);
   CHECK(p.blocks[4].distance_prog_start == DistanceProgStart::clear);
 
@@ -255,12 +255,12 @@ TEST_CASE("KRN-1 decoder: G161/G162 circle centre absolute/relative, G165 centre
       "N50 G164 G03 X100 Y60 I-49 J0\n");     // G164: 1 mm off is an error again
   REQUIRE(p.error);
   CHECK(p.error->block_nr == 50);
-  CHECK_THAT(p.error->message, Catch::Contains("does not lie on the circle"));
+  CHECK_THAT(p.error->message, Catch::Contains("maximum difference between radii exceeded"));
   REQUIRE(p.blocks.size() == 4);
   for (int i = 1; i <= 3; ++i) {
     INFO("block " << p.blocks[i].block_nr);
-    CHECK(p.blocks[i].motion.center_x == Approx(100 + (i == 3 ? 0.5 : 0)).margin(1e-9));
-    CHECK(p.blocks[i].motion.center_y == Approx(10 + (i == 3 ? 0.5 : 0)).margin(1e-9));
+    CHECK(p.blocks[i].motion.center[0] == Approx(100 + (i == 3 ? 0.5 : 0)).margin(1e-9));
+    CHECK(p.blocks[i].motion.center[1] == Approx(10 + (i == 3 ? 0.5 : 0)).margin(1e-9));
   }
 }
 
@@ -289,8 +289,8 @@ TEST_CASE("KRN-1 DDTG-8 decoder: #CS ON [v1,v2,v3,φ1,φ2,φ3] offsets and rotat
   CHECK(n40.end[0] == Approx(90).margin(1e-9));
   CHECK(n40.end[1] == Approx(60).margin(1e-9));
   const Motion& n50 = p.blocks[4].motion;
-  CHECK(n50.center_x == Approx(90).margin(1e-9));
-  CHECK(n50.center_y == Approx(50).margin(1e-9));
+  CHECK(n50.center[0] == Approx(90).margin(1e-9));
+  CHECK(n50.center[1] == Approx(50).margin(1e-9));
   CHECK(n50.end[0] == Approx(80).margin(1e-9));
   CHECK(n50.end[1] == Approx(50).margin(1e-9));
   CHECK(p.blocks[5].short_cut_restriction == ShortCutRestriction::not_skippable);
@@ -311,7 +311,7 @@ TEST_CASE("KRN-2 decoder: #CS and #CHANNEL INIT forms that are not supported are
                         Case{"#CS ON [1,2]\n#CS ON [3]\n", "nesting is not supported"},
                         Case{"#CS ON\n", "needs [v1,v2,v3"},
                         Case{"#CS ON [1,2,3,4,5,6,7]\n", "at most 6 components"},
-                        Case{"#CS ON [0,0,0,30]\nG02 X1 Y1 I1 F100\n", "rotated out of the XY plane"},
+                        Case{"#CS ON [0,0,0,30]\nG02 X1 Y1 I1 F100\n", "rotated out of that plane"},
                         Case{"#CS ON [1]\nG92 X0\n", "G92 while a #CS is active"},
                         Case{"#CHANNEL INIT [ACTPOS]\n", "#CHANNEL INIT takes [CMDPOS]"}}) {
     INFO(c.program);
@@ -442,11 +442,11 @@ TEST_CASE("KRN-1 KRN-2 decoder: end points and arcs are in range after G91, G92 
       // Every word in range, the sum not.
       {"N10 G01 G91 X600000 F1000\nN20 X600000\n", 2, "end point X 1200000 mm is out of range (|value| <= 1000000 mm)",
        1},
-      {"N10 G92 X-600000\nN20 G01 X600000 F1000\n", 2, "end point X 1200000 mm is out of range", 0},
+      {"N10 G92 X600000\nN20 G01 X600000 F1000\n", 2, "end point X 1200000 mm is out of range", 0},
       {"N10 #CS ON [900000]\nN20 G01 X900000 F1000\n", 2, "end point X 1800000 mm is out of range", 1},
       {"N10 #CS ON [0,0,0,0,0,45]\nN20 G01 X999999 Y999999 F1000\n", 2, "end point Y 1414212.", 1},
       // G161: the centre in program coordinates, shifted by G92.
-      {"N10 G92 X-600000\nN20 G161 G02 I600000 F1000\n", 2, "arc centre X 1200000 mm is out of range", 0},
+      {"N10 G92 X600000\nN20 G161 G02 I600000 F1000\n", 2, "arc centre X 1200000 mm is out of range", 0},
       // Centre in range, radius not.
       {"N10 G01 X-600000 F1000\nN20 G02 I1000000 J1\n", 2, "arc radius 1000000.0000005 mm is out of range", 1},
   });

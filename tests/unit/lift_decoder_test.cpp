@@ -200,7 +200,7 @@ TEST_CASE("LIFT-1 POS defaults to where Z stands; G91 is relative for this comma
 TEST_CASE("LIFT-1 POS and POS_LIMIT go through G92 and an active #CS like Z words", "[decoder][lift]") {
   const DecodedProgram p = decoded(
       "N10 G01 Z10 F1000\n"
-      "N20 G92 Z0\n"  // Z0 of the program is Z10 of the machine
+      "N20 G92 Z10\n"  // Z0 of the program is Z10 of the machine (an additive offset, KRN-8)
       "N30 Z[LIFT_START POS=5 POS_LIMIT=20]\n"
       "N40 X10\n"
       "N50 Z[LIFT_END]\n"
@@ -318,18 +318,18 @@ TEST_CASE("LIFT-5 syntax error within the lift range: the blocks before it are k
   for (size_t i = 2; i < 5; ++i) CHECK_FALSE(p.blocks[i].lift_end);
   // After a #FLUSH the open part parks; the part before it already ends at POS_LIMIT.
   const DecodedProgram q = decode("N10 G01 Z10 F1000\nN20 Z[LIFT_START POS=5 POS_LIMIT=30]\nN30 X10\nN40 #FLUSH\n"
-                                  "N50 X20\nN60 G17\n");
+                                  "N50 X20\nN60 G41\n");
   REQUIRE(q.error);
   CHECK(q.error->block_nr == 60);
   check_lift_start(block_nr(q, 20), 30, 30);
   check_lift_start(block_nr(q, 40), 30, 30);
   // An error on the LIFT_START line itself opens no range.
-  const DecodedProgram r = decode("N10 G01 Z10 F1000\nN20 X5 Z[LIFT_START POS=5 POS_LIMIT=30] G17\n");
+  const DecodedProgram r = decode("N10 G01 Z10 F1000\nN20 X5 Z[LIFT_START POS=5 POS_LIMIT=30] G41\n");
   REQUIRE(r.error);
   REQUIRE(r.blocks.size() == 1);
   CHECK_FALSE(r.blocks[0].lift_start);
   // A closed range is not touched by a later error.
-  const DecodedProgram s = decode("N10 Z[LIFT_START POS=5 POS_LIMIT=30]\nN20 G01 X5 F100\nN30 Z[LIFT_END]\nN40 G17\n");
+  const DecodedProgram s = decode("N10 Z[LIFT_START POS=5 POS_LIMIT=30]\nN20 G01 X5 F100\nN30 Z[LIFT_END]\nN40 G41\n");
   REQUIRE(s.error);
   check_lift_start(s.blocks[0], 5, 30);
 }

@@ -24,7 +24,7 @@ Motion line(std::vector<double> start, std::vector<double> end, MotionType type 
 // A G03 quarter circle around (0, 0) from (10, 0) to (0, 10).
 Motion quarter_circle() {
   Motion m = line({10, 0, 0}, {0, 10, 0}, MotionType::arc_ccw);
-  m.center_x = m.center_y = 0;
+  m.center[0] = m.center[1] = 0;
   return m;
 }
 
@@ -75,7 +75,7 @@ TEST_CASE("KRN-5 DDTG-6 rest_of_motion: a straight line from a point off the blo
 TEST_CASE("KRN-5 rest_of_motion: on a full circle its start is its end, the hint tells which", "[path][backward]") {
   const MachineConfig machine = test::xyz_machine();
   Motion circle = line({10, 0, 0}, {10, 0, 0}, MotionType::arc_ccw);
-  circle.center_x = circle.center_y = 0;
+  circle.center[0] = circle.center[1] = 0;
   const auto from_start = rest_of_motion(circle, {10, 0, 0}, false, machine, false);
   REQUIRE(from_start);  // the whole circle ahead
   CHECK(from_start->type == MotionType::arc_ccw);

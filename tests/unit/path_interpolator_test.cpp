@@ -98,8 +98,8 @@ TEST_CASE("KRN-3 interpolator: a block whose geometry is not finite is never mov
   arc.motion.type = MotionType::arc_cw;
   arc.motion.start = {10, 0, 0};
   arc.motion.end = {10, 200, 0};
-  arc.motion.center_x = 10;
-  arc.motion.center_y = 1e308;
+  arc.motion.center[0] = 10;
+  arc.motion.center[1] = 1e308;
   arc.motion.feed = 100;
   std::vector<Block> blocks = decode_program("N10 G01 X10 F6000\n", test::xyz_machine(), {0, 0, 0}).blocks;
   blocks.push_back(arc);

@@ -84,7 +84,7 @@ TEST_CASE("DPS-3 G100: a linear feed motion to the programmed point, non-modal",
   CHECK(p.blocks[2].not_searchable.empty());
   CHECK(p.blocks[3].motion.end == std::vector<double>{60, 6, 0});  // G91
   check_refused("N10 G100 X10\n", 1, "no feed F programmed for G100");
-  check_refused("N10 G100 X10 I5 F100\n", 1, "I/J are only allowed with G02/G03");
+  check_refused("N10 G100 X10 I5 F100\n", 1, "I J K R are only allowed with G02/G03");
 }
 
 TEST_CASE("DPS-3 #FLUSH WAIT marks its block, also outside a lift range; #FLUSH does not", "[decoder][DPS-3]") {

@@ -56,7 +56,7 @@ std::string difference(const Block& a, const Block& b) {
   field("motion.type", m.type == n.type);
   field("motion.start", m.start == n.start);
   field("motion.end", m.end == n.end);
-  field("motion.center", m.center_x == n.center_x && m.center_y == n.center_y);
+  field("motion.center", m.center[0] == n.center[0] && m.center[1] == n.center[1]);
   field("motion.feed", m.feed == n.feed);
   field("motion.caps", m.path_v_cap == n.path_v_cap && m.path_a_cap == n.path_a_cap && m.path_j_cap == n.path_j_cap);
   field("slope", a.slope == b.slope);
