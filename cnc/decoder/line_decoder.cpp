@@ -142,7 +142,12 @@ void add_technology_word(const Word& w, DecoderState& state, Block& block) {
       throw LineError{"'" + w.text() + "': the spindle speed S must be 0 .. " +
                       std::to_string(static_cast<int64_t>(max_spindle_speed)) + " rpm"};
     state.spindle_speed = w.value;
-    if (state.spindle_turning) block.m_functions.push_back({0, 0, 'S', w.value});
+    if (!state.spindle_turning) return;
+    // After an M03 / M04 of this block that sent the kept speed: this one instead.
+    const auto sent = std::find_if(block.m_functions.begin(), block.m_functions.end(),
+                                   [](const MFunction& f) { return f.address == 'S'; });
+    if (sent != block.m_functions.end()) sent->value = w.value;
+    else block.m_functions.push_back({0, 0, 'S', w.value});
     return;
   }
   const int nr = static_cast<int>(integer_code(w, max_m_function));

@@ -58,7 +58,7 @@ bool insert_pre_output(RingQueue<Block>& out, const MFunction& m, const Block& o
   carrier.nc_line = at.nc_line;
   carrier.block_count = at.block_count;
   carrier.block_nr = at.block_nr;
-  carrier.m_functions.push_back({m.nr, 0});
+  carrier.m_functions.push_back({m.nr, 0, m.address, m.value});
   out.insert(out.begin() + static_cast<std::ptrdiff_t>(insert_at), std::move(carrier));
   return reached;
 }

@@ -9,6 +9,7 @@
 
 #include "channel.hpp"
 #include "channel_runner.hpp"
+#include "collected_commands.hpp"
 #include "decoder.hpp"
 #include "path_segment.hpp"
 #include "test_machine.hpp"
@@ -229,6 +230,10 @@ TEST_CASE("KRN-8 S T D H and the spindle's M03 / M04 / M05 go to the PLC in the 
   CHECK(functions(p.blocks[4]) == "S5000 M4");
   CHECK(p.blocks[4].block_nr == 60);
   CHECK(functions(p.blocks[5]) == "M9");
+  // M03 before S in its block: the block's S goes out, not the one kept before.
+  const DecodedProgram q = decode("S100\nM03 S12000\n");
+  REQUIRE_FALSE(q.error);
+  CHECK(functions(q.blocks.back()) == "S12000 M3");
   CHECK_THAT(refusal("M03 M05\n"), Catch::StartsWith("'M05': one of M03 / M04 / M05 in a block"));
   CHECK_THAT(refusal("S-5 M03\n"), Catch::StartsWith("'S-5': the spindle speed S must be 0 .. 1000000 rpm"));
   CHECK_THAT(refusal("T1.5\n"), Catch::StartsWith("'T1.5' needs a whole number"));
@@ -333,4 +338,17 @@ TEST_CASE("KRN-8 channel: S T H wait for their acknowledgements on the HLI, D is
   CHECK(channel.hli().tool_offset_nr_r == 3);
   CHECK(channel.hli().program_block_ignore.state_r == 1);
   CHECK(highest_x == Approx(10));  // /N40 X20 skipped
+}
+
+TEST_CASE("KRN-8 DPS-3 block search collects S T D as the last of each and H by number, apart from M",
+          "[decoder][dialect][DPS-3]") {
+  const DecodedProgram p = decode("T1 M06 D1\nS5000 M03 H7\nT2 M06 D2\nS8000\nH7 H8 M08\nM09\n");
+  REQUIRE_FALSE(p.error);
+  CollectedCommands collected;
+  for (const Block& b : p.blocks) collected.pass(b);
+  std::string out;
+  for (const MFunction& f : collected.m_functions())
+    out += std::string(out.empty() ? "" : " ") + f.address +
+           std::to_string(f.address == 'S' ? static_cast<int>(f.value) : f.nr);
+  CHECK(out == "M3 T2 M6 D2 S8000 H7 H8 M9");
 }
