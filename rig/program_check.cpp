@@ -4,7 +4,8 @@
 #include <sstream>
 
 #include "config_error.hpp"
-#include "decoder.hpp"
+#include "line_source.hpp"
+#include "program_decoder.hpp"
 #include "run_scenario.hpp"
 #include "scenario_set.hpp"
 
@@ -12,10 +13,15 @@ namespace hil::rig {
 
 void check_nc_program(const Scenario& scenario) {
   if (!scenario.expected_events.empty() || scenario.allow_errors) return;
-  const cnc::DecodedProgram decoded =
-      cnc::decode_program(scenario.nc_program, scenario.machine, std::vector<double>(scenario.machine.axes.size(), 0.0));
-  if (!decoded.error) return;
-  const Event& error = *decoded.error;
+  // Streamed, the blocks dropped as they come: a program of any length in
+  // the same memory (docs/ARCHITECTURE.md, "Programs of any length").
+  const cnc::ProgramText text = cnc::program_text(scenario.nc_program);
+  cnc::ProgramDecoder decoder(text(), scenario.machine, std::vector<double>(scenario.machine.axes.size(), 0.0));
+  cnc::Block block;
+  while (decoder.next(block)) {
+  }
+  if (!decoder.error()) return;
+  const Event& error = *decoder.error();
   std::ostringstream where;
   where << "nc_program line " << error.nc_line;
   // The column where the refused block begins.
