@@ -23,6 +23,7 @@ struct Event {
   double limit = 0.0;
   std::string message;
   Verdict verdict = Verdict::none;
+  int64_t column = 0;  // 1-based column of a refused word in its NC line, 0 = not known (not on the bus)
 };
 
 const char* to_string(Severity severity);

@@ -110,6 +110,12 @@ struct BlockSearchState {
   HIL_RECORD(BlockSearchState, HLI_BLOCK_SEARCH_STATE_FIELDS)
 };
 using ControlUnitBlockSearch = ControlUnit<BlockSearchCommand>;
+
+struct ZeroOffsetCommand {
+  HIL_RECORD(ZeroOffsetCommand, HLI_ZERO_OFFSET_COMMAND_FIELDS)
+  bool operator==(const ZeroOffsetCommand& o) const { return group == o.group && axis_nr == o.axis_nr && value == o.value; }
+};
+using ControlUnitZeroOffset = ControlUnit<ZeroOffsetCommand>;
 using ControlUnitBlockSearchState = ControlUnitStateOf<BlockSearchState>;
 namespace block_search_state {
 constexpr int32_t none = 0, repositioning = 1, continued = 2, error = 3;

@@ -73,9 +73,12 @@ void add_fields(std::vector<HliField<Root>>& out, const std::string& prefix, Rea
                                                 [reach_leaf, i](auto& root) -> auto& { return reach_leaf(root)[i]; }));
     } else if constexpr (std::is_integral_v<Leaf>) {
       out.push_back(make_field<Root, Leaf>(prefix + name, reach_leaf));
-    } else if constexpr (std::is_same_v<Leaf, double> && !std::is_same_v<Struct, Root>) {
-      // A unit's LREAL; the record's own (dist_prog_start, path_velocity) have keys of their own.
-      out.push_back(make_field<Root, Leaf>(prefix + name, reach_leaf));
+    } else if constexpr (std::is_same_v<Leaf, double>) {
+      // A unit's LREAL, and the record's own but dist_prog_start and
+      // path_velocity, which have keys of their own (s_function_value_r, rpm).
+      const std::string own(name);
+      if (!std::is_same_v<Struct, Root> || (own != "dist_prog_start" && own != "path_velocity"))
+        out.push_back(make_field<Root, Leaf>(prefix + name, reach_leaf));
     }
   });
 }

@@ -56,6 +56,14 @@
   X(int64_t, continuation_nc_line)    /* its NC program line */                                    \
   X(double, continuation_distance)    /* 0.1 um: dist_prog_start at the continuation point */
 
+// A zero offset table entry as the PLC writes it (KRN-8; TwinCAT: the zero
+// offset data np_grp[group].achse[axis].versch, written over ADS). UINT is
+// uint16_t, LREAL double.
+#define HLI_ZERO_OFFSET_COMMAND_FIELDS(X)                              \
+  X(uint16_t, group)    /* 1 .. 6: G54 .. G59 */                      \
+  X(uint16_t, axis_nr)  /* 1 = the first machine axis */              \
+  X(double, value)      /* 0.1 um (0.0001 deg on a rotary axis) */
+
 // PLC -> CNC (hli_control_t), applied by the CNC one cycle later (RIG-6).
 #define HLI_CONTROL_UNITS(X)                                                           \
   /* Rising edge of command_w while enable_w starts the NC program. */                 \
@@ -91,7 +99,10 @@
   X(ControlUnitBlockSearch, block_search)                                             \
   /* decoder_mc_control.program_block_ignore (KRN-8): skip levels, bit 0 /1 .. */      \
   /* bit 9 /10, while enable_w; read by the decoder line by line. */                  \
-  X(ControlUnitUns32, program_block_ignore)
+  X(ControlUnitUns32, program_block_ignore)                                           \
+  /* A new command_w while enable_w sets one G54..G59 table entry; blocks */        \
+  /* decoded from then on use it (KRN-8). */                                         \
+  X(ControlUnitZeroOffset, zero_offset)
 
 // CNC -> PLC (hli_state_t), once per cycle. HLI lengths in 0.1 um.
 // block_nr_r and block_count_r are UDINT in the texts: int64_t holds them all.

@@ -232,6 +232,10 @@ void columns(Row& r, const hil::hli_control_t& m) {
   r.flag("block_search.enable_w", search.enable_w);
   r.integer("program_block_ignore.command_w", m.program_block_ignore.command_w);
   r.flag("program_block_ignore.enable_w", m.program_block_ignore.enable_w);
+  r.integer("zero_offset.command_w.group", m.zero_offset.command_w.group);
+  r.integer("zero_offset.command_w.axis_nr", m.zero_offset.command_w.axis_nr);
+  r.number("zero_offset.command_w.value_m", m.zero_offset.command_w.value * hli_unit_m);
+  r.flag("zero_offset.enable_w", m.zero_offset.enable_w);
 }
 
 void columns(Row& r, const hil::participant_t& m) {

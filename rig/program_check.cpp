@@ -24,13 +24,14 @@ void check_nc_program(const Scenario& scenario) {
   const Event& error = *decoder.error();
   std::ostringstream where;
   where << "nc_program line " << error.nc_line;
-  // The column where the refused block begins.
+  // The refused word's column, else where the refused block begins.
   std::istringstream lines(scenario.nc_program);
   std::string line;
   for (int64_t k = 0; k < error.nc_line && std::getline(lines, line); ++k) {
   }
   const size_t first = line.find_first_not_of(" \t");
-  if (error.nc_line > 0) where << " column " << (first == std::string::npos ? 1 : first + 1);
+  const int64_t column = error.column > 0 ? error.column : first == std::string::npos ? 1 : static_cast<int64_t>(first) + 1;
+  if (error.nc_line > 0) where << " column " << column;
   if (error.block_nr > 0) where << " (N" << error.block_nr << ")";
   if (error.id > 0) where << ", error " << error.id;
   throw ConfigError(where.str() + ": " + error.message);

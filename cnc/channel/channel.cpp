@@ -19,6 +19,7 @@ Channel::Channel(MachineConfig machine, ProgramText nc_program)
   hli_.lift_suppressed.assign(machine_.axes.size(), false);
   hli_.stop_conditions_r = stop_condition::ipo_input_empty;
   hli_.override.state_r = override_full;
+  zero_offsets_ = machine_.zero_offsets;
 }
 
 bool Channel::finished() const {
@@ -49,7 +50,27 @@ void Channel::apply_control(const HliControl& control) {
   hli_.program_block_ignore.request_r = ignore.enable_w;
   hli_.program_block_ignore.state_r = ignore.enable_w ? ignore.command_w : 0;
   if (program_) program_->set_block_ignore(hli_.program_block_ignore.state_r);
+  apply_zero_offset(control.zero_offset);
   apply_program_start(control);
+}
+
+void Channel::apply_zero_offset(const ControlUnitZeroOffset& write) {
+  if (!write.enable_w || write.command_w == last_zero_offset_write_) return;
+  last_zero_offset_write_ = write.command_w;
+  const ZeroOffsetCommand& c = write.command_w;
+  const double mm = c.value / hli_units_per_mm;
+  if (c.group < 1 || c.group > zero_offsets_.size() || c.axis_nr < 1 || c.axis_nr > machine_.axes.size() ||
+      !(std::abs(mm) <= 1e6)) {
+    Event refused;
+    refused.severity = Severity::warning;
+    refused.message = "zero offset write refused: group " + std::to_string(c.group) + " (1..6 = G54..G59), axis_nr " +
+                      std::to_string(c.axis_nr) + " (1.." + std::to_string(machine_.axes.size()) + "), value " +
+                      std::to_string(c.value) + " x 0.1 um (|value| <= 1 km)";
+    events_.raise(refused);
+    return;
+  }
+  zero_offsets_[c.group - 1][c.axis_nr - 1] = mm;
+  if (program_) program_->set_zero_offsets(zero_offsets_);
 }
 
 // KRN-4: control units act on the rising edge of command_w while enable_w.
@@ -127,6 +148,7 @@ void Channel::start_program(const ControlUnitBlockSearch& search) {
   program_ = std::make_unique<ProgramStream>(nc_program_, machine_, start_position,
                                              [this](LiftRange range) { lift_->add_range(std::move(range)); });
   program_->set_block_ignore(hli_.program_block_ignore.state_r);
+  program_->set_zero_offsets(zero_offsets_);
   hli_.block_search.state_r = BlockSearchState();
   if (search.enable_w && !search_continuation(search)) {
     take_stream_events();

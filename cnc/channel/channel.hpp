@@ -81,6 +81,8 @@ class Channel : private PathObserver {
   void apply_program_start(const HliControl& control);
   // The reset control unit: aborts the program where the path stands.
   void apply_reset(const ControlUnitBool& reset);
+  // KRN-8: a G54..G59 table entry written by the PLC.
+  void apply_zero_offset(const ControlUnitZeroOffset& write);
   // A new program run's units, at where the axes stand.
   void begin_program_run();
   void run_path(const HliControl& control, double t);
@@ -116,6 +118,10 @@ class Channel : private PathObserver {
 
   MachineConfig machine_;
   ProgramText nc_program_;
+  // G54..G59's tables, mm per axis: the machine file's as the PLC changed
+  // them (they outlast a program, as a real CNC's zero offset data).
+  std::vector<std::vector<double>> zero_offsets_;
+  ZeroOffsetCommand last_zero_offset_write_;
   std::unique_ptr<ProgramStream> program_;  // the run's blocks; the interpolator reads them
   HliState hli_;
   ChannelEvents events_;

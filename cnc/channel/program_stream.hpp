@@ -37,6 +37,8 @@ class ProgramStream {
   BlockSource& blocks() { return *lift_; }
   // The PLC's program_block_ignore: skip levels for the lines decoded from now on (KRN-8).
   void set_block_ignore(uint32_t levels) { decoder_->set_block_ignore(levels); }
+  // G54..G59's tables as the PLC has set them (KRN-8), for the lines decoded from now on.
+  void set_zero_offsets(const std::vector<std::vector<double>>& tables) { decoder_->set_zero_offsets(tables); }
 
   // Blocks its stages hold.
   size_t blocks_held() const { return decoder_->blocks_held() + pre_output_->blocks_held() + lift_->blocks_held(); }

@@ -58,7 +58,8 @@ struct DecoderState {
         position(std::move(start)),
         pre_output_mm(machine.m_pre_output_mm),
         offset(position.size(), 0.0),
-        reference_point_offset(position.size(), 0.0) {
+        reference_point_offset(position.size(), 0.0),
+        zero_offset_tables(machine.zero_offsets) {
     for (size_t a = 0; a < machine.axes.size(); ++a)
       if (machine.axes[a].name.size() == 1) {
         const char c = machine.axes[a].name[0];
@@ -82,6 +83,9 @@ struct DecoderState {
   AxisValues offset;
   AxisValues reference_point_offset;   // G92, mm per axis
   int zero_offset = 0;                 // 0: G53 (none, the initial state), 1..6: G54..G59
+  // G54..G59's tables, mm per axis: the machine file's, as the PLC
+  // (zero_offset) and the program (V.G.NP[..].V.<axis>) change them.
+  std::vector<std::vector<double>> zero_offset_tables;
   bool spindle_turning = false;        // M03 / M04; M05 (initial) stops it
   std::optional<double> spindle_speed; // rpm, the last S
   uint32_t block_ignore = 0;           // the PLC's program_block_ignore: skip levels in force (bit 0: /1)
@@ -98,8 +102,8 @@ struct DecoderState {
   void update_offset() {
     for (size_t a = 0; a < offset.size(); ++a)
       offset[a] = reference_point_offset[a] +
-                  (zero_offset > 0 && a < machine.zero_offsets[zero_offset - 1].size()
-                       ? machine.zero_offsets[zero_offset - 1][a]
+                  (zero_offset > 0 && a < zero_offset_tables[zero_offset - 1].size()
+                       ? zero_offset_tables[zero_offset - 1][a]
                        : 0.0);
   }
 

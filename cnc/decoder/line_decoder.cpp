@@ -207,7 +207,14 @@ BlockWords apply_words(const std::vector<Word>& words, DecoderState& state, Bloc
     if (w.value == 70 || w.value == 71) state.modal.inch = w.value == 70;
     if (w.value == 4) programmed.dwell = true;
   }
-  for (size_t k = 0; k < words.size(); ++k) apply_word(words[k], k == 0, state, programmed, block);
+  for (size_t k = 0; k < words.size(); ++k) {
+    try {
+      apply_word(words[k], k == 0, state, programmed, block);
+    } catch (LineError& e) {
+      if (e.word.empty()) e.word = words[k].letter + std::string(words[k].written);  // where it stands (KRN-8)
+      throw;
+    }
+  }
   return programmed;
 }
 
@@ -319,18 +326,36 @@ void decode_command_block(std::string_view code, size_t hash, DecoderState& stat
   decode_nc_command(upper_words(code.substr(hash)), state, block);
 }
 
-// What the left side of an assignment names: P<n>, or the pre-output
-// path of M<m>.
+// What the left side of an assignment names: P<n>, the pre-output path of
+// M<m>, or axis `axis` of zero offset `zero_offset` (1..6: G54..G59).
 struct AssignmentTarget {
-  std::optional<int64_t> parameter, m_function;
+  std::optional<int64_t> parameter, m_function, zero_offset;
+  int axis = -1;
 };
 
-// P<n> or V.G.M_FCT[<m>].PRE_OUTP_PATH after an optional N number, and
-// nothing else; either number out of range is none.
-AssignmentTarget assignment_target(std::string_view left) {
+// P<n>, V.G.M_FCT[<m>].PRE_OUTP_PATH or V.G.NP[<1..6>].V.<axis> after an
+// optional N number, and nothing else; a number out of range or an axis
+// the machine lacks is none.
+AssignmentTarget assignment_target(std::string_view left, const DecoderState& state) {
   LineCursor cursor(left);
   cursor.skip_block_nr();
   AssignmentTarget target;
+  if (cursor.take_keyword("V.G.NP")) {  // V.G.NP[<n>].V.<axis> (TF5200 "Zero offsets")
+    if (!cursor.take('[')) return {};
+    cursor.skip_blanks();
+    const std::optional<int64_t> group = whole_number(cursor.take_digits(), 6);
+    if (!group || *group < 1 || !(cursor.take(']') && cursor.take('.') && cursor.take('V') && cursor.take('.'))) return {};
+    cursor.skip_blanks();
+    const std::string_view axis = cursor.rest();
+    const size_t end = axis.find_first_of(" \t");
+    const std::string name = upper_words(axis.substr(0, end));
+    target.axis = state.machine.axis_index(name);
+    if (target.axis < 0) return {};
+    LineCursor after(axis.substr(name.size()));
+    if (!after.at_end()) return {};
+    target.zero_offset = group;
+    return target;
+  }
   if (cursor.take_keyword("V.G.M_FCT")) {
     if (!cursor.take('[')) return {};
     cursor.skip_blanks();
@@ -343,14 +368,15 @@ AssignmentTarget assignment_target(std::string_view left) {
   return target;
 }
 
-// P<n> = <expression> (a decoder variable) or
+// P<n> = <expression> (a decoder variable),
 // V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm> (P-CHAN-00070 for M<m> from here
-// on), after an optional N number. Decoder work: no block.
+// on) or V.G.NP[<1..6>].V.<axis> = <mm> (G54..G59's entry, KRN-8), after
+// an optional N number. Decoder work: no block.
 void assign_parameter(std::string_view code, size_t equals, DecoderState& state) {
-  const AssignmentTarget target = assignment_target(code.substr(0, equals));
-  if (!target.parameter && !target.m_function)
+  const AssignmentTarget target = assignment_target(code.substr(0, equals), state);
+  if (!target.parameter && !target.m_function && !target.zero_offset)
     throw LineError{"'=' is only allowed in P<n> = <expression> (n 0.." + std::to_string(max_p_parameter) +
-                    ") and V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm>"};
+                    "), V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm> and V.G.NP[<1..6>].V.<axis> = <mm>"};
   double value = 0;
   try {
     value = state.evaluate(std::string(code.substr(equals + 1)));
@@ -359,6 +385,11 @@ void assign_parameter(std::string_view code, size_t equals, DecoderState& state)
   }
   if (target.parameter) {
     state.parameters[static_cast<int>(*target.parameter)] = value;
+  } else if (target.zero_offset) {
+    // G54..G59's table entry (mm, inch under G70): from this line on.
+    const double unit = state.modal.inch && !is_rotary(state.machine.axes[target.axis]) ? mm_per_inch : 1.0;
+    state.zero_offset_tables[*target.zero_offset - 1][target.axis] = checked_length(value * unit, "zero offset");
+    state.update_offset();
   } else {
     if (value < 0) throw LineError{"PRE_OUTP_PATH must be >= 0 mm"};
     state.pre_output_mm[static_cast<int>(*target.m_function)] = checked_length(value, "PRE_OUTP_PATH");

@@ -1,6 +1,7 @@
 #include "program_decoder.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -26,6 +27,21 @@ Event line_error(const std::string& message, std::string_view line, int64_t line
   if (cursor.take('N')) error.block_nr = whole_number(cursor.take_digits(), max_block_nr).value_or(0);
   error.message = decoding::printable(message) + " in '" + decoding::printable(line) + "'";
   return error;
+}
+
+// The 1-based column of `word` in `line` (any case), 0 if it is not there
+// as written (blanks inside it, or none given).
+int64_t column_of(const std::string& word, std::string_view line) {
+  if (word.empty() || word.size() > line.size()) return 0;
+  const auto upper = [](char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; };
+  for (size_t i = 0; i + word.size() <= line.size(); ++i) {
+    size_t k = 0;
+    while (k < word.size() && upper(line[i + k]) == upper(word[k])) ++k;
+    // Not the start of a longer number: G4 is not the G4 of G41.
+    const bool whole = i + k == line.size() || !(std::isdigit(static_cast<unsigned char>(line[i + k])) || line[i + k] == '.');
+    if (k == word.size() && whole) return static_cast<int64_t>(i) + 1;
+  }
+  return 0;
 }
 
 // The axis positions decoding starts from are the first block's start.
@@ -100,6 +116,7 @@ void ProgramDecoder::decode_next_line() {
   } catch (const LineError& e) {
     error_ = line_error(e.message, lines_[line_], line_nr);
     error_->id = e.id;
+    error_->column = column_of(e.word, lines_[line_]);
   } catch (const std::invalid_argument& e) {
     error_ = line_error(e.what(), lines_[line_], line_nr);
   } catch (const std::exception& e) {  // a decoder bug: still an error of this line, not a crashed CNC

@@ -39,6 +39,11 @@ class ProgramDecoder : public BlockSource {
   bool next(Block& block) override;
   // Block skip levels (bit 0: /1) for the lines decoded from now on (KRN-8).
   void set_block_ignore(uint32_t levels) { state_.block_ignore = levels; }
+  // G54..G59's tables (mm per axis) for the lines decoded from now on (KRN-8).
+  void set_zero_offsets(const std::vector<std::vector<double>>& tables) {
+    state_.zero_offset_tables = tables;
+    state_.update_offset();
+  }
   // The error that ended the stream; none before it is met.
   const std::optional<Event>& error() const { return error_; }
   // Decoding has ended (M30, the end of the text, or an error).

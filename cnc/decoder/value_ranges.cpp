@@ -27,7 +27,8 @@ std::optional<int64_t> whole_number(std::string_view digits, int64_t max) {
   int64_t value = 0;
   for (const char c : digits) {
     if (c < '0' || c > '9') return std::nullopt;
-    if (value > (max - (c - '0')) / 10) return std::nullopt;  // value * 10 + digit > max, without overflow
+    // value * 10 + digit > max, without overflow (and right for a max below 10).
+    if (value > max / 10 || value * 10 > max - (c - '0')) return std::nullopt;
     value = value * 10 + (c - '0');
   }
   return value;

@@ -13,7 +13,8 @@ namespace hil::cnc::decoding {
 // of that line (NC line and N number are added there).
 struct LineError {
   std::string message;
-  int32_t id = 0;  // TF5200 error ID where the texts give one
+  int32_t id = 0;    // TF5200 error ID where the texts give one
+  std::string word = {};  // the refused word as written ("G41"), for its column; empty if none
 };
 
 // X10, G01, or an axis command in square brackets, Z[LIFT_START POS=40]:

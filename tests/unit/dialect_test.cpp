@@ -270,7 +270,43 @@ TEST_CASE("KRN-8 zero offsets G54..G59 from the machine file, G53 deselects; G92
     node["zero_offsets"]["G55"]["Q"] = 1;
     CHECK_THROWS_WITH(parse_machine_config(node), Catch::Contains("zero_offsets.G55.Q"));
   }
+  SECTION("V.G.NP[n].V.<axis> = <mm> sets a table entry from the program (TF5200 \"Zero offsets\")") {
+    const DecodedProgram p = decode("G54 G01 X0 F1000\nV.G.NP[1].V.X = 40\nX0\nV.G.NP[6].V.Y=2*3\nG59 Y0\n", machine);
+    REQUIRE_FALSE(p.error);
+    CHECK(p.blocks[0].motion.end[0] == 100);
+    CHECK(p.blocks[1].motion.end[0] == 40);  // in force at once for G54
+    CHECK(p.blocks[2].motion.end[1] == 6);
+    CHECK_THAT(refusal("V.G.NP[7].V.X = 1\n", machine), Catch::StartsWith("'=' is only allowed in"));
+    CHECK_THAT(refusal("V.G.NP[1].V.Q = 1\n", machine), Catch::StartsWith("'=' is only allowed in"));
+  }
   CHECK_THAT(refusal("G54 G55 X1\n"), Catch::StartsWith("two zero offsets G53..G59 in one block"));
+}
+
+TEST_CASE("KRN-8 channel: the PLC writes a zero offset table entry; blocks decoded after it use it",
+          "[channel][dialect]") {
+  // G54 X is 100 in config/xyz_machine.yaml; the PLC makes it 250 before the start.
+  Channel channel(test::xyz_machine(), "G54 G01 X0 Y0 Z0 F6000\nM30\n");
+  HliControl c;
+  c.zero_offset = {{1, 1, 2500000}, true};  // G54, X, 250 mm in 0.1 um
+  channel.step(0, c);
+  c.zero_offset.command_w = {9, 1, 0};  // no G59 + 3: refused with a warning, the tables stay
+  channel.step(1, c);
+  const std::vector<Event> events = channel.take_events();
+  REQUIRE(events.size() == 1);
+  CHECK(events[0].severity == Severity::warning);
+  CHECK_THAT(events[0].message, Catch::StartsWith("zero offset write refused: group 9"));
+  test::run_program(channel, nullptr, nullptr, 2);
+  CHECK(channel.setpoints()[0].position == Approx(250));
+  CHECK(channel.setpoints()[2].position == Approx(-20));
+}
+
+TEST_CASE("KRN-8 KRN-2 a refused word's column in its line", "[decoder][dialect]") {
+  const DecodedProgram p = decode("N10 G01 X1 F100\n  N20 G01 G41 X2\nN30 G01 A5\n");
+  REQUIRE(p.error);
+  CHECK(p.error->column == 11);
+  CHECK(decode("N10 G01 X1 A5 F100\n").error->column == 12);
+  CHECK(decode("n10 g01 x1 g4 g41\n").error->column == 15);  // the G41, not the G4 of it
+  CHECK(decode("G01 X10 F100\nG02 X0 Y0 R3\n").error->column == 0);  // the block, not one word
 }
 
 TEST_CASE("KRN-8 block skip: /1 .. /10, a bare / is /1, switched by program_block_ignore", "[decoder][dialect]") {

@@ -51,9 +51,9 @@ void check_every_field(RoundTrip round_trip) {
 
 TEST_CASE("KRN-4 HLI table: every control field written by name reaches the LCM message and back", "[hli]") {
   // 10 control units with command_w and enable_w (reset included); insert_cmd (ISC-1): 5 command_w fields,
-  // enable_w, semaphor_rw; block_search (DPS-3): 3 command_w fields, enable_w; KRN-8: h/s/t_function_ack and
-  // program_block_ignore.
-  CHECK(hli_fields<HliControl>().size() == 39);
+  // enable_w, semaphor_rw; block_search (DPS-3): 3 command_w fields, enable_w; KRN-8: h/s/t_function_ack,
+  // program_block_ignore, zero_offset (3 command_w fields, enable_w).
+  CHECK(hli_fields<HliControl>().size() == 43);
   CHECK(find_hli_field<HliControl>("reset.command_w") != nullptr);
   CHECK(find_hli_field<HliControl>("block_search.enable_w") != nullptr);
   CHECK(std::string(find_hli_field<HliControl>("insert_cmd.command_w.dist_or_pos")->type) == "LREAL");
