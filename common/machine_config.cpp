@@ -47,7 +47,7 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
     throw ConfigError(m.path("name") + ": must be one of the letters A B C U V W X Y Z, not '" + axis.name + "'");
   const std::string at = where + " (axis " + axis.name + ")";
   namespace range = machine_ranges;
-  const bool rotary = axis.name.find_first_of("ABC") != std::string::npos;
+  const bool rotary = axis.rotary();
   const auto units = [rotary](Bounds bounds) { return in_units(bounds, rotary); };
   axis.v_max = m.number("v_max", units(range::velocity));
   axis.v_rapid = axis.v_max;
@@ -115,8 +115,7 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
   if (m.has("modulo_lower") || m.has("modulo_upper")) {  // KRN-7
     if (!m.has("modulo_lower") || !m.has("modulo_upper"))
       throw ConfigError(at + ": a modulo axis needs both modulo_lower and modulo_upper");
-    if (axis.name.find_first_of("ABC") == std::string::npos)
-      throw ConfigError(at + ": only the rotary axes A, B, C can be modulo axes");
+    if (!axis.rotary()) throw ConfigError(at + ": only the rotary axes A, B, C can be modulo axes");
     if (axis.software_limits)
       throw ConfigError(at + ": a modulo axis has no software limit switches (P-AXIS-00177 / 00178)");
     axis.modulo = true;

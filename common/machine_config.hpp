@@ -60,6 +60,8 @@ struct AxisConfig {
   int64_t watchdog_cycles = 20;
 
   double modulo_range() const { return modulo_upper - modulo_lower; }
+  // A B C: degrees where a linear axis has mm (docs/UNITS.md); only these may be modulo axes.
+  bool rotary() const { return name == "A" || name == "B" || name == "C"; }
   // The position shifted into the modulo range; itself on a linear axis.
   double in_modulo_range(double position) const;
 

@@ -37,9 +37,6 @@ struct BlockWords {
 // G70: inch. Lengths of the linear axes, I J K R and F (inch/min) scale;
 // rotary axes (A B C) keep degrees.
 constexpr double mm_per_inch = 25.4;
-bool is_rotary(const AxisConfig& axis) {
-  return axis.modulo || (!axis.name.empty() && (axis.name[0] == 'A' || axis.name[0] == 'B' || axis.name[0] == 'C'));
-}
 
 // The letters TwinCAT names axes with ("Axis names": A B C U V W X Y Z Q):
 // one of them that is no axis here is "not an axis of this machine"; any
@@ -67,8 +64,6 @@ void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
   if (g <= 3) {
     if (programmed.motion) throw LineError{"two motion G codes in one block"};
     programmed.motion = static_cast<MotionType>(g);
-  } else if (g == 4) {
-    programmed.dwell = true;
   } else if (g >= 17 && g <= 19) {
     modal.plane = static_cast<Plane>(g - 17);
   } else if (g == 40) {
@@ -76,9 +71,9 @@ void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
   } else if (g >= 53 && g <= 59) {
     if (programmed.zero_offset) throw LineError{"two zero offsets G53..G59 in one block"};
     programmed.zero_offset = g - 53;
-  } else if (g == 70 || g == 71 || g == 94) {
-    // G70 / G71: read before the other words (apply_words); G94 (feed per
-    // minute) is the rig's only feed mode.
+  } else if (g == 4 || g == 70 || g == 71 || g == 94) {
+    // G04, G70 / G71: read before the other words (apply_words); G94 (feed
+    // per minute) is the rig's only feed mode.
   } else if (g == 90 || g == 91) {
     modal.absolute = g == 90;
   } else if (g == 92) {
@@ -191,7 +186,7 @@ void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& prog
       }
       const int axis = axis_of(w, state);
       if (programmed.axes[axis]) throw LineError{std::string("axis ") + w.letter + " programmed twice"};
-      const double scale = is_rotary(state.machine.axes[axis]) ? 1.0 : unit;
+      const double scale = state.machine.axes[axis].rotary() ? 1.0 : unit;
       programmed.axes[axis] = checked_length(w.value * scale, std::string_view(&w.letter, 1));
     }
   }
@@ -387,7 +382,7 @@ void assign_parameter(std::string_view code, size_t equals, DecoderState& state)
     state.parameters[static_cast<int>(*target.parameter)] = value;
   } else if (target.zero_offset) {
     // G54..G59's table entry (mm, inch under G70): from this line on.
-    const double unit = state.modal.inch && !is_rotary(state.machine.axes[target.axis]) ? mm_per_inch : 1.0;
+    const double unit = state.modal.inch && !state.machine.axes[target.axis].rotary() ? mm_per_inch : 1.0;
     state.zero_offset_tables[*target.zero_offset - 1][target.axis] = checked_length(value * unit, "zero offset");
     state.update_offset();
   } else {

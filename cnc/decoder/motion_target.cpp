@@ -14,15 +14,19 @@ namespace {
 
 int main_axis(const DecoderState& state, int k) { return state.machine.axis_index(std::string(1, "XYZ"[k])); }
 
-// Main axes of a machine position in the active #CS, and back.
+// The main axes of a machine position in program coordinates (zero
+// offsets, G92, the active #CS), and back; a main axis the machine lacks
+// is 0.
 Eigen::Vector3d to_program(const DecoderState& state, const AxisValues& machine) {
-  Eigen::Vector3d workpiece;
-  for (int k = 0; k < 3; ++k) workpiece[k] = machine[main_axis(state, k)] - state.offset[main_axis(state, k)];
-  return state.cs->to_program(workpiece);
+  Eigen::Vector3d workpiece = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k)
+    if (const int a = main_axis(state, k); a >= 0) workpiece[k] = machine[a] - state.offset[a];
+  return state.cs ? state.cs->to_program(workpiece) : workpiece;
 }
 Eigen::Vector3d to_machine(const DecoderState& state, const Eigen::Vector3d& program) {
-  Eigen::Vector3d machine = state.cs->to_workpiece(program);
-  for (int k = 0; k < 3; ++k) machine[k] += state.offset[main_axis(state, k)];
+  Eigen::Vector3d machine = state.cs ? state.cs->to_workpiece(program) : program;
+  for (int k = 0; k < 3; ++k)
+    if (const int a = main_axis(state, k); a >= 0) machine[k] += state.offset[a];
   return machine;
 }
 
@@ -70,23 +74,6 @@ PlaneAxes plane_axes(Plane plane) {
 }
 
 const char* plane_name(Plane plane) { return plane == Plane::g18 ? "G18" : plane == Plane::g19 ? "G19" : "G17"; }
-
-// The main axes of a machine position in program coordinates (G92, #CS),
-// and back.
-Eigen::Vector3d program_point(const DecoderState& state, const AxisValues& machine) {
-  if (state.cs) return to_program(state, machine);
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();  // a machine without Z: 0
-  for (int k = 0; k < 3; ++k)
-    if (const int a = main_axis(state, k); a >= 0) point[k] = machine[a] - state.offset[a];
-  return point;
-}
-Eigen::Vector3d machine_point(const DecoderState& state, const Eigen::Vector3d& program) {
-  if (state.cs) return to_machine(state, program);
-  Eigen::Vector3d machine = program;
-  for (int k = 0; k < 3; ++k)
-    if (const int a = main_axis(state, k); a >= 0) machine[k] += state.offset[a];
-  return machine;
-}
 
 // R: the centre on the bisector of the chord, on the side that makes the
 // arc at most 180 degrees for R > 0 and more for R < 0 (TF5200 "Circular
@@ -168,10 +155,10 @@ void set_arc_centre(Motion& m, const ArcWords& words, const DecoderState& state)
   if (state.cs && !state.cs->keeps_axis(axes.normal))
     throw LineError{std::string("G02/G03 in ") + plane_name(plane) +
                     " in a #CS rotated out of that plane are not supported yet"};
-  const Eigen::Vector3d start = program_point(state, m.start);
+  const Eigen::Vector3d start = to_program(state, m.start);
   Eigen::Vector3d centre = start;
   if (words.r) {
-    const Eigen::Vector3d end = program_point(state, m.end);
+    const Eigen::Vector3d end = to_program(state, m.end);
     const Eigen::Vector2d c = centre_by_radius({start[axes.first], start[axes.second]},
                                                {end[axes.first], end[axes.second]}, checked_length(*words.r, "R"),
                                                m.type == MotionType::arc_ccw, state);
@@ -184,7 +171,7 @@ void set_arc_centre(Motion& m, const ArcWords& words, const DecoderState& state)
       centre[k] = state.modal.centre_absolute ? *centre_words[k] : start[k] + *centre_words[k];
     }
   }
-  const Eigen::Vector3d machine = machine_point(state, centre);
+  const Eigen::Vector3d machine = to_machine(state, centre);
   m.center = {machine[axes.first], machine[axes.second]};
   if (state.modal.centre_correction && !words.r) correct_centre(m);
   checked_length(m.center[0], std::string("arc centre ") + "XYZ"[axes.first]);
