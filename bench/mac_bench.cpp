@@ -2,6 +2,7 @@
 // cost"): signing and checking the rig's own messages at their encoded
 // sizes, and the copy the signing bus makes; beside it, what one cycle of
 // a three-axis rig sends.
+#include "command_line.hpp"
 #include <hil/axis_setpoint_t.hpp>
 #include <hil/axis_state_t.hpp>
 #include <hil/hli_state_t.hpp>
@@ -32,7 +33,9 @@ Sample sample(const std::string& channel, Message m) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  CLI::App app{"mac_bench: the time to sign and verify a rig message's MAC, per message type (RIG-12)"};
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
   const lcm_support::RunSecret secret = lcm_support::RunSecret::generate();
   hil::axis_state_t state{};
   state.axis = "X";

@@ -1,4 +1,5 @@
 #include "fault_plan.hpp"
+#include "file_keys.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -204,6 +205,16 @@ std::vector<int64_t> AnswerSchedule::arrivals(int64_t cycle) {
   }
   for (int c = 0; c < copies; ++c) out.push_back(cycle);
   return out;
+}
+
+const std::vector<std::string>& file_keys::fault() {
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> all;
+    for (const auto& [name, kind] : kinds) all.push_back(name);
+    all.insert(all.end(), {"percent", "at_s", "from_s", "until_s", "cycles", "ms", "for_s"});
+    return all;
+  }();
+  return keys;
 }
 
 }  // namespace hil

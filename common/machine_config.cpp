@@ -1,4 +1,5 @@
 #include "machine_config.hpp"
+#include "file_keys.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -21,6 +22,7 @@ const std::vector<std::string> machine_keys = {"name", "cycle_time_us", "overrid
                                                "enable_time_based_lift", "lift_min_dist", "plc_watchdog_cycles",
                                                "max_radius_diff_circle", "max_proz_radius_diff_circle",
                                                "zero_offsets", "axes"};
+const std::vector<std::string> zero_offset_names = {"G54", "G55", "G56", "G57", "G58", "G59"};
 const std::vector<std::string> axis_keys = {
     "name", "v_max", "v_rapid", "a_max", "j_max", "kv", "velocity_lag_s", "velocity_loop_order",
     "velocity_damping", "velocity_feedforward", "drive_acceleration_limit", "friction_coulomb", "friction_viscous",
@@ -132,7 +134,7 @@ AxisConfig parse_axis(const YAML::Node& node, const std::string& where) {
 // zero_offsets: {G54: {X: 100, Y: 50}, G55: ..}: mm per axis (KRN-8).
 void read_zero_offsets(const YAML::Node& node, const std::string& where, MachineConfig& config) {
   if (!node.IsMap()) throw ConfigError(where + ": must map G54 .. G59 to {axis: mm}");
-  const std::vector<std::string> names = {"G54", "G55", "G56", "G57", "G58", "G59"};
+  const std::vector<std::string>& names = zero_offset_names;
   std::vector<std::string> axis_names;
   for (const AxisConfig& axis : config.axes) axis_names.push_back(axis.name);
   const ConfigMap tables(node, where, names);
@@ -219,5 +221,9 @@ MachineConfig parse_machine_config(const YAML::Node& node) {
     throw ConfigError(std::string("machine: ") + e.what());
   }
 }
+
+const std::vector<std::string>& file_keys::machine() { return machine_keys; }
+const std::vector<std::string>& file_keys::axis() { return axis_keys; }
+const std::vector<std::string>& file_keys::zero_offset_tables() { return zero_offset_names; }
 
 }  // namespace hil

@@ -1,4 +1,5 @@
 #include "scenario.hpp"
+#include "file_keys.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -12,6 +13,7 @@
 
 #include "config_error.hpp"
 #include "hli_names.hpp"
+#include "yaml_error.hpp"
 
 namespace hil {
 namespace {
@@ -102,7 +104,7 @@ YAML::Node load_yaml_file(const fs::path& path, const std::string& what) {
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw ConfigError(path.string() + ": " + e.what());
+    throw ConfigError(path.string() + ": " + explain_yaml_error(text, e));
   }
 }
 
@@ -340,11 +342,26 @@ YAML::Node load_scenario_yaml(const std::string& path) {
 
 Scenario load_scenario_file(const std::string& path) {
   try {
-    return load_scenario_node(load_yaml_file(path, "scenario"), path);
+    const YAML::Node root = load_yaml_file(path, "scenario");
+    Scenario scenario = load_scenario_node(root, path);
+    locate_nc_program(scenario, root, path);
+    return scenario;
   } catch (const YAML::Exception& e) {
     throw ConfigError(path + ": " + e.what());
   }
 }
+
+namespace {
+
+Scenario read_scenario_named(const YAML::Node& root, const MachineConfig* machine, const std::string& path) {
+  try {
+    return read_scenario(root, machine);
+  } catch (const ConfigError& e) {
+    throw ConfigError(path + ": " + e.what());
+  }
+}
+
+}  // namespace
 
 Scenario load_scenario_node(YAML::Node root, const std::string& path) {
   const fs::path dir = fs::path(path).parent_path();
@@ -380,15 +397,37 @@ Scenario load_scenario_node(YAML::Node root, const std::string& path) {
         return program;
       });
       root.remove("nc_file");
+      Scenario s = read_scenario_named(root, machine ? &*machine : nullptr, path);
+      s.nc_source = nc_file.string();
+      return s;
     }
-    try {
-      return read_scenario(root, machine ? &*machine : nullptr);
-    } catch (const ConfigError& e) {
-      throw ConfigError(path + ": " + e.what());
-    }
+    return read_scenario_named(root, machine ? &*machine : nullptr, path);
   } catch (const YAML::Exception& e) {
     throw ConfigError(path + ": " + e.what());
   }
+}
+
+void locate_nc_program(Scenario& scenario, const YAML::Node& root, const std::string& path) {
+  if (!root.IsMap() || root["nc_file"] || !root["nc_program"]) return;
+  const YAML::Mark mark = root["nc_program"].Mark();
+  if (mark.is_null()) return;
+  std::ifstream in(path);
+  std::string line;
+  for (int k = 0; k <= mark.line && std::getline(in, line); ++k) {
+  }
+  if (!in) return;
+  // A block scalar (| or >) begins on the line after its indicator.
+  const bool block = static_cast<size_t>(mark.column) < line.size() &&
+                     (line[static_cast<size_t>(mark.column)] == '|' || line[static_cast<size_t>(mark.column)] == '>');
+  scenario.nc_source = path;
+  scenario.nc_source_line = mark.line + (block ? 2 : 1);
+}
+
+std::string nc_line_place(const Scenario& scenario, int64_t nc_line) {
+  const std::string line = " line " + std::to_string(nc_line);
+  if (scenario.nc_source.empty()) return "NC program" + line;
+  if (scenario.nc_source_line <= 0) return scenario.nc_source + line;
+  return "nc_program" + line + " (scenario file line " + std::to_string(scenario.nc_source_line + nc_line - 1) + ")";
 }
 
 std::string to_yaml(const Scenario& scenario) {
@@ -396,5 +435,15 @@ std::string to_yaml(const Scenario& scenario) {
   out << scenario.resolved;
   return out.c_str();
 }
+
+const std::vector<std::string>& file_keys::scenario() { return scenario_keys; }
+const std::vector<std::string>& file_keys::run() { return run_keys; }
+const std::vector<std::string>& file_keys::plc() { return plc_keys; }
+const std::vector<std::string>& file_keys::timeline_step() { return step_keys; }
+const std::vector<std::string>& file_keys::control() { return control_keys(); }
+const std::vector<std::string>& file_keys::expectation() { return expectation_keys(); }
+const std::vector<std::string>& file_keys::condition() { return condition_keys(); }
+const std::vector<std::string>& file_keys::event_expectation() { return event_keys; }
+const std::vector<std::string>& file_keys::violation_expectation() { return violation_keys; }
 
 }  // namespace hil

@@ -72,6 +72,10 @@ struct EventExpectation {
   int64_t nc_line = 0;  // if > 0, only events from this NC program line count
   int count_min = 1;    // at least this many
   bool absent = false;  // instead: none may appear
+  bool matches(const Event& e) const {
+    return (!id || e.id == *id) && e.severity == severity && (nc_line == 0 || e.nc_line == nc_line) &&
+           (parameter.empty() || e.parameter == parameter);
+  }
 };
 
 // An offline-check violation the scenario provokes on purpose (RIG-4): the
@@ -90,6 +94,11 @@ struct Scenario {
   std::vector<std::string> requirements;  // SPEC IDs the scenario exercises
   MachineConfig machine;
   std::string nc_program;
+  // Where the program stands, for messages (issue 37): its NC file (line
+  // 0), or the scenario file and the line of an inline nc_program's line 1;
+  // "" when not known (a scenario read from a manifest).
+  std::string nc_source;
+  int64_t nc_source_line = 0;
   double max_time_s = 60;      // the CNC aborts the run after this much simulated time
   double settle_time_s = 0.1;  // cycles run after program end, for drives and PLC
   std::vector<TimelineStep> timeline;
@@ -116,6 +125,11 @@ Scenario load_scenario_file(const std::string& path);
 // The same for a file's top mapping already read (`path` names the file and
 // the folder its `machine:` and `nc_file:` are relative to).
 Scenario load_scenario_node(YAML::Node root, const std::string& path);
+// Sets where `scenario`'s inline nc_program begins in the scenario file
+// `path` that `root` was read from (its marks intact: not a clone).
+void locate_nc_program(Scenario& scenario, const YAML::Node& root, const std::string& path);
+// "nc_program line 6 (scenario file line 12)", "part.nc line 6", "NC program line 6".
+std::string nc_line_place(const Scenario& scenario, int64_t nc_line);
 // A scenario file's YAML as it stands (ConfigError if it cannot be read).
 YAML::Node load_scenario_yaml(const std::string& path);
 // Parses a scenario whose machine and NC program are inline (as in a manifest).

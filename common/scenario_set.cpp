@@ -1,4 +1,5 @@
 #include "scenario_set.hpp"
+#include "file_keys.hpp"
 
 #include <algorithm>
 
@@ -112,6 +113,7 @@ ScenarioSet load_scenario_set_node(const YAML::Node& root, const std::string& pa
   if (!root.IsMap() || !root["variants"]) {
     if (root.IsMap() && root["compare"]) throw ConfigError(path + ": compare: needs variants");
     set.variants.push_back({"", load_scenario_node(YAML::Clone(root), path)});
+    locate_nc_program(set.variants.back().scenario, root, path);
     set.name = set.variants.front().scenario.name;
     return set;
   }
@@ -133,6 +135,7 @@ ScenarioSet load_scenario_set_node(const YAML::Node& root, const std::string& pa
     one["name"] = scenario_name + "." + name;
     try {
       set.variants.push_back({name, load_scenario_node(one, path)});
+      locate_nc_program(set.variants.back().scenario, root, path);
     } catch (const ConfigError& e) {
       // The variant's plc keys stand in plc, its expectations after the file's.
       std::string own;
@@ -157,5 +160,9 @@ ScenarioSet load_scenario_set_node(const YAML::Node& root, const std::string& pa
 ScenarioSet load_scenario_set(const std::string& path) {
   return load_scenario_set_node(load_scenario_yaml(path), path);
 }
+
+const std::vector<std::string>& file_keys::variant() { return variant_keys; }
+const std::vector<std::string>& file_keys::comparison() { return comparison_keys; }
+const std::vector<std::string>& file_keys::same_path() { return same_path_keys; }
 
 }  // namespace hil

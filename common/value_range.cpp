@@ -1,4 +1,5 @@
 #include "value_range.hpp"
+#include "file_keys.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -49,5 +50,7 @@ ValueRange parse_whole_range(const YAML::Node& node, const std::string& where, i
   return parse_range(node, where,
                      [&](const ConfigMap& m, const char* key) { return static_cast<double>(m.whole(key, lo, hi)); });
 }
+
+const std::vector<std::string>& file_keys::range() { return range_keys; }
 
 }  // namespace hil

@@ -11,6 +11,7 @@
 #include <hil/run_manifest_t.hpp>
 #include <hil/scenario_text_t.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -143,23 +144,44 @@ void columns(Row& r, const hil::event_t& m) {
   r.text("message", m.message);
 }
 
+// Per axis, what follows a per-axis field's name: ".X" by the axis' name,
+// "[i]" where the name is not a plain one or not the only one so named.
+std::vector<std::string> axis_suffixes(const std::vector<std::string>& names, size_t count) {
+  std::unordered_map<std::string, int> seen;
+  for (const std::string& name : names) ++seen[name];
+  std::vector<std::string> out;
+  for (size_t i = 0; i < count; ++i) {
+    const std::string* name = i < names.size() ? &names[i] : nullptr;
+    const bool plain = name && !name->empty() && name->size() <= 16 && seen[*name] == 1 &&
+                       std::all_of(name->begin(), name->end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+    out.push_back(plain ? "." + *name : "[" + std::to_string(i) + "]");
+  }
+  return out;
+}
+
 void columns(Row& r, const hil::hli_state_t& m) {
   head(r, m);
   r.integer("channel_state", m.channel_state);
+  r.text("channel_state_name", m.channel_state >= 0 && m.channel_state <= 3
+                                   ? to_string(static_cast<ChannelState>(m.channel_state))
+                                   : std::to_string(m.channel_state));
   r.integer("block_nr_r", m.block_nr_r);
   r.integer("block_count_r", m.block_count_r);
   r.integer("stop_conditions_r", m.stop_conditions_r);
+  r.text("stop_conditions_r_names", stop_conditions_text(m.stop_conditions_r));
   r.number("dist_prog_start_m", m.dist_prog_start * hli_unit_m);
   r.number("path_velocity_m_s", m.path_velocity * 1e-3);
   r.integer("last_error_id", m.last_error_id);
   r.integer("n_axes", m.n_axes);
   for (size_t i = 0; i < m.axis_name.size(); ++i) r.text(at("axis_name", i), m.axis_name[i]);
+  const std::vector<std::string> axis = axis_suffixes(
+      m.axis_name, std::max({m.axis_position_r.size(), m.lift_active.size(), m.lift_suppressed.size()}));
   for (size_t i = 0; i < m.axis_position_r.size(); ++i) {
     const Length l = length_of(i < m.axis_name.size() ? m.axis_name[i] : "");
-    r.number(at("axis_position_r", i) + "_" + l.unit, m.axis_position_r[i] * (l.si / hli_units_per_mm));
+    r.number("axis_position_r" + axis[i] + "_" + l.unit, m.axis_position_r[i] * (l.si / hli_units_per_mm));
   }
-  for (size_t i = 0; i < m.lift_active.size(); ++i) r.flag(at("lift_active", i), m.lift_active[i]);
-  for (size_t i = 0; i < m.lift_suppressed.size(); ++i) r.flag(at("lift_suppressed", i), m.lift_suppressed[i]);
+  for (size_t i = 0; i < m.lift_active.size(); ++i) r.flag("lift_active" + axis[i], m.lift_active[i]);
+  for (size_t i = 0; i < m.lift_suppressed.size(); ++i) r.flag("lift_suppressed" + axis[i], m.lift_suppressed[i]);
   unit(r, "program_start", m.program_start);
   unit(r, "feedhold", m.feedhold);
   r.flag("override.request_r", m.override.request_r);
@@ -416,6 +438,13 @@ std::string seconds_since(int64_t start_us, int64_t us) {
 }
 
 }  // namespace
+
+std::optional<MessageColumns> message_columns(const LogRecord& record) {
+  const Kind* k = kind_of(record);
+  Row row(false);
+  if (!k || !k->columns(record, row)) return std::nullopt;
+  return MessageColumns{k->type, k->simulated_time, row.cycle, row.names(), row.cells()};
+}
 
 std::string csv_quoted(const std::string& text) {
   std::string out = "\"";

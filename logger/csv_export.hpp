@@ -38,6 +38,18 @@ struct CsvExport {
 // records are whole (`damage` says where it is not).
 CsvExport export_csv(const std::string& log_path, const std::string& dir);
 
+struct LogRecord;
+
+// One message as the CSV writes it: its columns' names and cells (texts
+// quoted); none if it is no type of the rig or does not decode.
+struct MessageColumns {
+  std::string type;
+  bool simulated_time = false;  // its cycle is the time it belongs to (CsvChannel::simulated_time)
+  int64_t cycle = 0;
+  std::vector<std::string> names, cells;
+};
+std::optional<MessageColumns> message_columns(const LogRecord& record);
+
 // A text as an RFC 4180 field: always quoted, quotes doubled.
 std::string csv_quoted(const std::string& text);
 

@@ -18,6 +18,7 @@
 
 #include "channels.hpp"
 #include "config_error.hpp"
+#include "csv_export.hpp"
 #include "event_log_reader.hpp"
 #include "inbox.hpp"
 #include "messages.hpp"
@@ -159,6 +160,8 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
       log.hli.block_nr_r.push_back(m.block_nr_r);
       log.hli.channel_state.push_back(m.channel_state);
       log.hli.block_search_state.push_back(m.block_search.state_r.state);
+      log.hli.stop_conditions.push_back(m.stop_conditions_r);
+      log.hli.override_percent.push_back(m.override.state_r * 0.1);
       // The lift's limits (LIFT-2, LIFT-3): the cycles each axis lifts, and
       // where the path velocity changes.
       if (checker) checker->add_path_velocity(m.cycle, m.path_velocity);
@@ -214,6 +217,34 @@ RunLog read_run_log(const std::string& path, std::optional<CheckReport>* report)
   return log;
 }
 
+namespace {
+
+// "channel AXIS_X_CMD, message 7 (cycle 7): position_m 0.0123 vs 0.0124" (issue 37):
+// the first field of the message that differs, and both values.
+std::string describe_difference(const std::string& channel, size_t index, const std::string& a, const std::string& b) {
+  auto decoded = [&](const std::string& bytes) {
+    LogRecord record;
+    record.channel = channel;
+    record.data.assign(bytes.begin(), bytes.end());
+    return message_columns(record);
+  };
+  std::string out = "channel " + channel + " differs at message " + std::to_string(index);
+  const std::optional<MessageColumns> ma = decoded(a), mb = decoded(b);
+  if (!ma || !mb || ma->type != mb->type) return out + " (not both decodable as one type of the rig)";
+  out += " (" + ma->type + ", cycle " + std::to_string(ma->cycle) +
+         (ma->cycle != mb->cycle ? " vs " + std::to_string(mb->cycle) : "") + ")";
+  for (size_t k = 0; k < std::max(ma->names.size(), mb->names.size()); ++k) {
+    const std::string* name_a = k < ma->names.size() ? &ma->names[k] : nullptr;
+    const std::string* name_b = k < mb->names.size() ? &mb->names[k] : nullptr;
+    if (!name_a || !name_b || *name_a != *name_b)
+      return out + ": field " + (name_a ? *name_a : *name_b) + " only in " + (name_a ? "the first" : "the second");
+    if (ma->cells[k] != mb->cells[k]) return out + ": " + *name_a + " " + ma->cells[k] + " vs " + mb->cells[k];
+  }
+  return out + " (in bytes the columns do not show)";
+}
+
+}  // namespace
+
 std::string compare_run_logs(const std::string& a, const std::string& b) {
   // A damaged file differs from any log (its damage may hide a record).
   std::string damaged;
@@ -252,7 +283,7 @@ std::string compare_run_logs(const std::string& a, const std::string& b) {
     if (other == pb.end()) return "channel " + channel + " only in " + a;
     const auto& om = other->second;
     for (size_t i = 0; i < std::min(messages.size(), om.size()); ++i)
-      if (messages[i] != om[i]) return "channel " + channel + " differs at message " + std::to_string(i);
+      if (messages[i] != om[i]) return describe_difference(channel, i, messages[i], om[i]);
     if (messages.size() != om.size())
       return "channel " + channel + ": " + std::to_string(messages.size()) + " vs " +
              std::to_string(om.size()) + " messages";

@@ -35,6 +35,8 @@ struct HliTrace {
   std::vector<int64_t> block_nr_r;
   std::vector<int> channel_state;
   std::vector<int> block_search_state;  // block_search.state_r.state (DPS-3)
+  std::vector<int32_t> stop_conditions;  // stop_conditions_r
+  std::vector<double> override_percent;  // override.state_r in %
 };
 
 // RIG-6 real-time mode: the CNC's last statistics (rt_stats_t).

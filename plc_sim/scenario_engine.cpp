@@ -217,13 +217,9 @@ std::vector<ExpectationResult> ScenarioEngine::finish(std::optional<int64_t> end
                          " held in cycles " + std::to_string(p.opened_cycle) + ".." + std::to_string(last_cycle_),
                          std::nullopt});
   }
-  auto matches = [](const EventExpectation& x, const Event& e) {
-    return (!x.id || e.id == *x.id) && e.severity == x.severity && (x.nc_line == 0 || e.nc_line == x.nc_line) &&
-           (x.parameter.empty() || e.parameter == x.parameter);
-  };
   for (const EventExpectation& x : expected_events_) {
     int count = 0;
-    for (const Event& e : seen_events_) count += matches(x, e) ? 1 : 0;
+    for (const Event& e : seen_events_) count += x.matches(e) ? 1 : 0;
     ExpectationResult r;
     r.what = std::string(x.absent ? "no " : "") + to_string(x.severity) + (x.id ? " " + std::to_string(*x.id) : "") +
              (x.parameter.empty() ? "" : " (" + x.parameter + ")") +
@@ -236,7 +232,7 @@ std::vector<ExpectationResult> ScenarioEngine::finish(std::optional<int64_t> end
     for (const Event& e : seen_events_) {
       if (e.severity != Severity::error) continue;
       bool expected = false;
-      for (const EventExpectation& x : expected_events_) expected = expected || (!x.absent && matches(x, e));
+      for (const EventExpectation& x : expected_events_) expected = expected || (!x.absent && x.matches(e));
       if (!expected) results.push_back({"no unexpected error", false, " " + describe(e), std::nullopt});
     }
   }

@@ -8,8 +8,10 @@
 #include "command_line.hpp"
 #include "config_error.hpp"
 #include "export_command.hpp"
+#include "file_schema.hpp"
 #include "plots.hpp"
 #include "report.hpp"
+#include "root_cause.hpp"
 #include "program_check.hpp"
 #include "run_log.hpp"
 #include "run_command.hpp"
@@ -40,8 +42,7 @@ int check_log(const std::string& path, const std::string& plot_dir) {
   if (!plot_dir.empty()) std::cout << hil::rig::draw_plots(log, *check, plot_dir) << '\n';
   const std::vector<std::string> problems = hil::logger::log_problems(log.facts);
   std::cout << "refused traffic: " << hil::logger::describe_refused(log.facts) << '\n'
-            << "expectations (plc_sim): " << log.facts.verdict_pass << " passed, " << log.facts.verdict_fail
-            << " failed\n"
+            << hil::rig::describe_expectation_counts(log.facts) << '\n'
             << "log complete: " << (problems.empty() ? "yes" : "NO") << '\n';
   for (const std::string& problem : problems) std::cout << "  " << problem << '\n';
   const bool passed = check->passed() && problems.empty();
@@ -71,6 +72,15 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 64));
   run_cmd->add_option("--shard", suite.shard,
                       "K/N: run only the K-th of N deterministic slices of the suite (a CI matrix, an Indexed Job)");
+  run_cmd->add_option("-k", suite.patterns,
+                      "only the scenarios whose file path or name contains PATTERN (case ignored; 'not PATTERN' "
+                      "leaves out; several -k: any of them)")
+      ->type_name("PATTERN")
+      ->allow_extra_args(false);
+  run_cmd->add_flag("-x,--exitfirst", suite.exit_first, "stop the suite at its first FAILED or ERROR (the rest SKIPPED)");
+  run_cmd->add_flag("--lf,--last-failed", suite.last_failed,
+                    "only the scenarios that failed when a suite last ran them here (.hil/last-failed); all if none");
+  run_cmd->add_flag("--list", suite.list, "list the scenarios that would run (after -k, --lf, --shard), run none");
   run_cmd->add_option("--junit", suite.junit_file, "write JUnit XML results (one testcase per scenario)");
   run_cmd->add_option("--json", suite.json_file, "write the results as JSON");
   run_cmd->add_flag("--netns", suite.netns,
@@ -93,6 +103,13 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--realtime", run.realtime,
                     "real-time mode (RIG-6): the CNC ticks on the wall clock at the machine's cycle time and never "
                     "waits for answers (as the scenario key run.realtime; docs/REALTIME.md)");
+  run_cmd->add_option("--pace", run.pace,
+                      "lock-step no faster than PACE x real time, to watch it (1: as the machine would run, 0.1: ten "
+                      "times slower); the run and its log are the same as unpaced")
+      ->check(CLI::PositiveNumber);
+  run_cmd->add_flag("--spy", suite.spy,
+                    "start lcm-spy on the run's URL, wait until it listens, then run paced (--pace, default 1); "
+                    "one scenario, processes (docs/MONITORING.md)");
   run_cmd->add_flag("--in-process", run.in_process,
                     "every node in this process, on direct calls instead of LCM: the same messages and log, "
                     "no network (for suites)");
@@ -117,7 +134,7 @@ int main(int argc, char** argv) {
   auto* spy_cmd = app.add_subcommand("spy", "lcm-spy with every rig type decodable, live or on a log (RIG-7)");
   spy_cmd->add_option("source", spy_source, "a rig's LCM URL (hil run prints it) or a log file")
       ->capture_default_str();
-  spy_cmd->add_option("--speed", speed, "playback speed of a log file (1 = as recorded)")
+  spy_cmd->add_option("--speed", speed, "playback speed of a log file (1 = the machine's pace, in simulated time)")
       ->check(CLI::PositiveNumber);
 
   std::string replay_url = hil::rig::default_lcm_url;
@@ -125,7 +142,8 @@ int main(int argc, char** argv) {
   replay_cmd->add_option("log", log_file, "LCM event log")->required()->check(CLI::ExistingFile);
   replay_cmd->add_option("--url", replay_url, "where to play it (watch it there with hil spy URL)")
       ->capture_default_str();
-  replay_cmd->add_option("--speed", speed, "1 = as recorded, 2 = twice as fast")->check(CLI::PositiveNumber);
+  replay_cmd->add_option("--speed", speed, "1 = the machine's pace (simulated time), 2 = twice as fast")
+      ->check(CLI::PositiveNumber);
 
   auto* logplayer_cmd = app.add_subcommand(
       "logplayer", "lcm-logplayer-gui on a log (seek, speed, channel filters), playing onto an LCM URL (RIG-7)");
@@ -138,19 +156,35 @@ int main(int argc, char** argv) {
                "difference or 'identical' (RIG-7)");
   rerun_cmd->add_option("log", log_file, "LCM event log of a rig run")->required()->check(CLI::ExistingFile);
 
+  std::string schema_of = "scenario";
+  auto* schema_cmd = app.add_subcommand(
+      "schema", "print the JSON Schema of scenario or machine files, made from the loaders' keys (schemas/, docs/SCENARIOS.md)");
+  schema_cmd->add_option("file", schema_of, "scenario or machine")
+      ->check(CLI::IsMember({"scenario", "machine"}))
+      ->capture_default_str();
+
   std::string csv_dir;
   auto* export_cmd = app.add_subcommand("export", "a log as CSV files, one per channel, SI units (RIG-4, docs/EXPORT.md)");
   export_cmd->add_option("log", log_file, "LCM event log")->required()->check(CLI::ExistingFile);
   export_cmd->add_option("--csv", csv_dir, "folder for the CSV files")->required();
 
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
-  if (*spy_cmd) return hil::rig::exec_spy(run.bin_dir, spy_source, speed);
-  if (*replay_cmd) return hil::rig::exec_replay(log_file, replay_url, speed);
-  if (*logplayer_cmd) return hil::rig::exec_logplayer(log_file, replay_url);
+  try {
+    if (*spy_cmd) return hil::rig::run_spy(run.bin_dir, spy_source, speed);
+    if (*replay_cmd) return hil::rig::run_replay(log_file, replay_url, speed);
+    if (*logplayer_cmd) return hil::rig::run_logplayer(log_file, replay_url);
+  } catch (const std::exception& e) {
+    std::cerr << "hil: " << e.what() << '\n';
+    return 2;
+  }
   if (*rerun_cmd) return hil::rig::exec_rerun(run.bin_dir, log_file);
   try {
     if (*run_cmd) return hil::rig::run_scenarios(suite, run);
     if (*validate_cmd) return hil::rig::validate_scenario_files(validate_files);
+    if (*schema_cmd) {
+      std::cout << (schema_of == "machine" ? hil::machine_schema() : hil::scenario_schema());
+      return 0;
+    }
     if (*check_cmd) return check_log(log_file, plot_dir);
     if (*export_cmd) return hil::rig::export_csv_command(log_file, csv_dir);
     if (*compare_cmd) {

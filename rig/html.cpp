@@ -18,6 +18,30 @@ table{border-collapse:collapse;margin:.5em 0}th,td{border:1px solid #ccc;padding
 th{background:#f0f0f0}td.num{text-align:right;font-variant-numeric:tabular-nums}
 pre{background:#f7f7f7;border:1px solid #ddd;padding:.6em;overflow-x:auto}
 img{max-width:100%;border:1px solid #ddd}figure{margin:1em 0}.because{color:#c62828}
+tr.violation td,td.over{background:#ffd6d6}td.over{font-weight:bold}
+.zoom{overflow:hidden;border:1px solid #ddd;cursor:grab}.zoom img{transform-origin:0 0;border:none;display:block}
+)";
+
+// Zoomable figures (issue 37): the wheel zooms about the pointer, a drag
+// pans, a double click resets. The figures are SVG: sharp at any zoom.
+const char* const zoom_script = R"(<script>
+document.querySelectorAll('.zoom').forEach(function (box) {
+  var img = box.querySelector('img'), s = 1, x = 0, y = 0, drag = null;
+  function apply() { img.style.transform = 'translate(' + x + 'px,' + y + 'px) scale(' + s + ')'; }
+  box.addEventListener('wheel', function (ev) {
+    ev.preventDefault();
+    var r = box.getBoundingClientRect(), mx = ev.clientX - r.left, my = ev.clientY - r.top;
+    var n = Math.min(50, Math.max(1, s * (ev.deltaY < 0 ? 1.25 : 0.8)));
+    x = mx - (mx - x) * n / s; y = my - (my - y) * n / s; s = n;
+    if (s === 1) { x = 0; y = 0; }
+    apply();
+  }, {passive: false});
+  box.addEventListener('mousedown', function (ev) { drag = [ev.clientX - x, ev.clientY - y]; ev.preventDefault(); });
+  window.addEventListener('mousemove', function (ev) { if (drag) { x = ev.clientX - drag[0]; y = ev.clientY - drag[1]; apply(); } });
+  window.addEventListener('mouseup', function () { drag = null; });
+  box.addEventListener('dblclick', function () { s = 1; x = 0; y = 0; apply(); });
+});
+</script>
 )";
 
 }  // namespace
@@ -42,7 +66,8 @@ std::string escape_markup(const std::string& text) {
 
 std::string html_page(const std::string& title, const std::string& body) {
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escape_markup(title) +
-         "</title>\n<style>\n" + style + "</style>\n</head>\n<body>\n" + body + "</body>\n</html>\n";
+         "</title>\n<style>\n" + style + "</style>\n</head>\n<body>\n" + body +
+         (body.find("class=\"zoom\"") != std::string::npos ? zoom_script : "") + "</body>\n</html>\n";
 }
 
 std::string data_uri(const std::string& path, const std::string& media_type) {

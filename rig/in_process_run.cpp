@@ -45,7 +45,7 @@ int guarded(const std::string& node, Body body) {
 }  // namespace
 
 std::vector<logger::ProcessExit> run_in_process(const std::string& resolved_file, const std::string& log_file,
-                                                const std::string& output_file, int64_t run_id) {
+                                                const std::string& output_file, int64_t run_id, double pace) {
   const auto previous = spdlog::default_logger();
   spdlog::set_default_logger(spdlog::basic_logger_mt("in_process", output_file, true));
   spdlog::set_pattern("[%H:%M:%S.%e] [%l] %v");
@@ -85,8 +85,10 @@ std::vector<logger::ProcessExit> run_in_process(const std::string& resolved_file
   cnc_participants.insert(cnc_participants.end(), {"plc_sim", "logger"});
   std::vector<logger::ProcessExit> exits;
   lcm_support::FaultInjectingBus cnc_side(bus, scenario.faults, "cnc");
+  cnc_node::CncTiming timing;
+  timing.pace = pace;
   exits.push_back({"cnc", guarded("cnc", [&] {
-                     return cnc_node::run_cnc(scenario, text, cnc_side, run_id, cnc_participants, {});
+                     return cnc_node::run_cnc(scenario, text, cnc_side, run_id, cnc_participants, timing);
                    })});
   bus.drain();  // the CNC's RUN_END reaches everyone
 

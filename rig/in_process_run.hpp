@@ -17,8 +17,8 @@ namespace hil::rig {
 // Runs the scenario `resolved_file` (as hil run writes it: every node
 // reads it, as the processes do), writes the log to `log_file` and what the
 // nodes say to `output_file`; returns each node's exit status as its
-// process would (cnc, logger, every axis_sim, plc_sim).
+// process would (cnc, logger, every axis_sim, plc_sim). `pace`: as CncTiming's.
 std::vector<logger::ProcessExit> run_in_process(const std::string& resolved_file, const std::string& log_file,
-                                                const std::string& output_file, int64_t run_id);
+                                                const std::string& output_file, int64_t run_id, double pace = 0);
 
 }  // namespace hil::rig

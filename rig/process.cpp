@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 #include <thread>
 
@@ -84,6 +85,14 @@ int Process::stop(std::chrono::milliseconds grace) {
   ::kill(pid_, SIGKILL);
   while (!poll()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   return *status_;
+}
+
+std::string last_line_of(const std::string& output_file) {
+  std::ifstream in(output_file);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (line.find_first_not_of(" \t") != std::string::npos) last = line;
+  return last;
 }
 
 }  // namespace hil::rig

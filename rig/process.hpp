@@ -15,6 +15,10 @@ struct Placement {
   int fifo_priority = 0;  // SCHED_FIFO at this priority if > 0
 };
 
+// The last line of a child's output file that is not blank ("" if none):
+// what it said before it ended.
+std::string last_line_of(const std::string& output_file);
+
 class Process {
  public:
   // Starts argv[0] (a path, or a name on PATH) with its stdout and stderr

@@ -23,7 +23,7 @@ void check_nc_program(const Scenario& scenario) {
   if (!decoder.error()) return;
   const Event& error = *decoder.error();
   std::ostringstream where;
-  where << "nc_program line " << error.nc_line;
+  where << nc_line_place(scenario, error.nc_line);
   // The refused word's column, else where the refused block begins.
   std::istringstream lines(scenario.nc_program);
   std::string line;

@@ -52,28 +52,19 @@ int count_errors(const logger::RunLog& log) {
   return errors;
 }
 
-std::string format_limits(const logger::CheckReport& report) {
-  std::ostringstream out;
-  // Per axis: the largest value of each quantity, its limit and the margin
-  // left (negative: the limit was exceeded).
+std::vector<AxisLimits> limit_table(const logger::CheckReport& report) {
+  std::vector<AxisLimits> table;
   bool lifted = false;  // any axis: then every axis shows its lift rows (LIFT-2)
   for (const auto& a : report.axes) lifted = lifted || a.lift_cycles > 0;
   for (const auto& a : report.axes) {
-    char head[160];
-    std::snprintf(head, sizeof head, "axis %-37s %12s %12s %10s\n", a.axis.c_str(), "max", "limit", "margin");
-    out << head;
+    AxisLimits axis{a.axis, {}, ""};
     // A, B, C are rotary axes (DIN 66025, KRN-7): degrees.
     const std::string u = a.axis.find_first_of("ABC") == 0 ? "deg" : "mm";
     auto row = [&](const std::string& quantity, double value, double limit) {
-      char buf[160];
       // Round-off above a limit (within the check's tolerance) shows as 0.0 %.
       double margin = limit > 0 ? 100 * (limit - value) / limit : 0;
       if (margin < 0 && margin > -0.05) margin = 0;
-      if (limit > 0)
-        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12.4f %8.1f %%\n", quantity.c_str(), value, limit, margin);
-      else
-        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12s %10s\n", quantity.c_str(), value, "-", "-");
-      out << buf;
+      axis.rows.push_back({quantity, value, limit, margin});
     };
     row("commanded |v| [" + u + "/s] / v_max", a.cmd_v, a.v_max);
     row("commanded |a| [" + u + "/s^2] / a_max", a.cmd_a, a.a_max);
@@ -81,16 +72,40 @@ std::string format_limits(const logger::CheckReport& report) {
     row("actual |v| [" + u + "/s] / P-AXIS-00440", a.act_v, a.v_err_limit);
     row("actual |a| [" + u + "/s^2] / P-AXIS-00442", a.act_a, a.a_err_limit);
     row("|following error| [" + u + "] / P-AXIS-00168", a.following_error, a.slep_max);
-    if (!lifted) continue;
-    // The lift's overload range: TF5200 plans the lift axis up to P-AXIS-00442;
-    // its jerk stays within j_max.
-    row("lifting |a| [" + u + "/s^2] / P-AXIS-00442", a.cmd_a_lift, a.a_err_limit);
-    row("lifting |j| [" + u + "/s^3] / j_max", a.cmd_j_lift, a.j_max);
-    char note[200];
-    std::snprintf(note, sizeof note, "  lift_active %lld cycles: commanded |a| up to %.2f a_max%s\n",
-                  static_cast<long long>(a.lift_cycles), a.a_max > 0 ? a.cmd_a_lift / a.a_max : 0.0,
-                  a.cmd_a_lift > a.a_max * (1 + logger::limit_tolerance) ? " (the overload range above a_max)" : "");
-    out << note;
+    if (lifted) {
+      // The lift's overload range: TF5200 plans the lift axis up to P-AXIS-00442;
+      // its jerk stays within j_max.
+      row("lifting |a| [" + u + "/s^2] / P-AXIS-00442", a.cmd_a_lift, a.a_err_limit);
+      row("lifting |j| [" + u + "/s^3] / j_max", a.cmd_j_lift, a.j_max);
+      char note[200];
+      std::snprintf(note, sizeof note, "lift_active %lld cycles: commanded |a| up to %.2f a_max%s",
+                    static_cast<long long>(a.lift_cycles), a.a_max > 0 ? a.cmd_a_lift / a.a_max : 0.0,
+                    a.cmd_a_lift > a.a_max * (1 + logger::limit_tolerance) ? " (the overload range above a_max)" : "");
+      axis.note = note;
+    }
+    table.push_back(axis);
+  }
+  return table;
+}
+
+std::string format_limits(const logger::CheckReport& report) {
+  std::ostringstream out;
+  // Per axis: the largest value of each quantity, its limit and the margin
+  // left (negative: the limit was exceeded).
+  for (const AxisLimits& axis : limit_table(report)) {
+    char head[160];
+    std::snprintf(head, sizeof head, "axis %-37s %12s %12s %10s\n", axis.axis.c_str(), "max", "limit", "margin");
+    out << head;
+    for (const LimitRow& r : axis.rows) {
+      char buf[160];
+      if (r.limit > 0)
+        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12.4f %8.1f %%\n", r.quantity.c_str(), r.value, r.limit,
+                      r.margin_percent);
+      else
+        std::snprintf(buf, sizeof buf, "  %-40s %12.4f %12s %10s\n", r.quantity.c_str(), r.value, "-", "-");
+      out << buf;
+    }
+    if (!axis.note.empty()) out << "  " << axis.note << '\n';
   }
   int64_t violating_cycles = 0;
   for (const auto& v : report.violations) violating_cycles += v.cycles;

@@ -2,11 +2,25 @@
 // The text a person reads after a run or an offline check (RIG-4, RIG-5).
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "limit_check.hpp"
 #include "run_log.hpp"
 
 namespace hil::rig {
+
+// Per axis, the largest value of each quantity the offline check watches,
+// its limit (0: none) and the margin left (negative: exceeded).
+struct LimitRow {
+  std::string quantity;  // "commanded |a| [mm/s^2] / a_max"
+  double value = 0, limit = 0, margin_percent = 0;
+};
+struct AxisLimits {
+  std::string axis;
+  std::vector<LimitRow> rows;
+  std::string note;  // the lift's, if any axis lifted
+};
+std::vector<AxisLimits> limit_table(const logger::CheckReport& report);
 
 // Per-axis table, violations, events and the PLC's expectation results.
 std::string format_check(const logger::RunLog& log, const logger::CheckReport& report);

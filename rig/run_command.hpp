@@ -15,6 +15,11 @@ struct SuiteCommand {
   std::string shard;  // "K/N" or ""
   std::string junit_file, json_file;
   bool netns = false;
+  std::vector<std::string> patterns;  // -k: only the scenarios matching one (suite_selection.hpp)
+  bool exit_first = false;            // -x
+  bool last_failed = false;           // --lf
+  bool list = false;                  // --list: show what would run, run nothing
+  bool spy = false;                   // --spy: lcm-spy on the run's URL first (live_spy.hpp)
 };
 
 // The exit status: 0 if every scenario passed (skipped ones aside), 1 if

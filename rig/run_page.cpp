@@ -6,6 +6,7 @@
 
 #include "html.hpp"
 #include "report.hpp"
+#include "root_cause.hpp"
 
 namespace hil::rig {
 namespace {
@@ -40,11 +41,16 @@ std::string plots_section(const PagePlots& plots) {
   std::string out = "<h2>Plots</h2>\n";
   size_t shown = 0;
   for (const std::string& image : plots.images) {
-    const std::string uri = data_uri(image, "image/png");
+    // The SVG beside a PNG, where gnuplot drew one: zoomable, sharp at any zoom.
+    const std::string svg = data_uri(fs::path(image).replace_extension(".svg").string(), "image/svg+xml");
+    const std::string uri = svg.empty() ? data_uri(image, "image/png") : svg;
     if (uri.empty()) continue;
     const std::string name = fs::path(image).filename().string();
-    out += "<figure><img src=\"" + uri + "\" alt=\"" + e(name) + "\"><figcaption>" + e(name) +
-           "</figcaption></figure>\n";
+    out += svg.empty() ? "<figure><img src=\"" + uri + "\" alt=\"" + e(name) + "\"><figcaption>" + e(name) +
+                             "</figcaption></figure>\n"
+                       : "<figure><div class=\"zoom\"><img src=\"" + uri + "\" alt=\"" + e(name) +
+                             "\"></div><figcaption>" + e(name) +
+                             " (wheel: zoom, drag: pan, double click: back)</figcaption></figure>\n";
     ++shown;
   }
   if (shown == 0) out += "<p>No plots: " + e(plots.note.empty() ? "none drawn" : plots.note) + "</p>\n";
@@ -59,6 +65,34 @@ std::string row(const std::vector<std::string>& cells) {
   std::string out = "<tr>";
   for (const std::string& c : cells) out += "<td>" + e(c) + "</td>";
   return out + "</tr>\n";
+}
+
+// The offline check's per-axis limits and its violations as tables (issue 37: was a <pre>).
+std::string limits_section(const logger::CheckReport& check) {
+  std::ostringstream b;
+  b << "<table>\n<tr><th>axis</th><th>quantity</th><th>max</th><th>limit</th><th>margin</th></tr>\n";
+  for (const AxisLimits& axis : limit_table(check)) {
+    for (size_t i = 0; i < axis.rows.size(); ++i) {
+      const LimitRow& r = axis.rows[i];
+      b << "<tr><td>" << (i == 0 ? e(axis.axis) : "") << "</td><td>" << e(r.quantity) << "</td><td class=\"num\">"
+        << number(r.value, 4) << "</td><td class=\"num\">" << (r.limit > 0 ? number(r.limit, 4) : "-")
+        << "</td><td class=\"num" << (r.limit > 0 && r.margin_percent < 0 ? " over" : "") << "\">"
+        << (r.limit > 0 ? number(r.margin_percent, 1) + " %" : "-") << "</td></tr>\n";
+    }
+    if (!axis.note.empty()) b << "<tr><td></td><td colspan=\"4\">" << e(axis.note) << "</td></tr>\n";
+  }
+  b << "</table>\n<p>limit violations: " << check.violations.size() << "</p>\n";
+  if (!check.violations.empty()) {
+    b << "<table>\n<tr><th>axis</th><th>quantity</th><th>from [s]</th><th>to [s]</th><th>cycles</th><th>worst</th>"
+         "<th>at [s]</th><th>limit</th></tr>\n";
+    for (const logger::Violation& v : check.violations)
+      b << "<tr class=\"violation\"><td>" << e(v.axis) << "</td><td>" << e(v.quantity) << "</td><td class=\"num\">"
+        << number(v.time_s, 4) << "</td><td class=\"num\">" << number(v.end_time_s, 4) << "</td><td class=\"num\">"
+        << v.cycles << "</td><td class=\"num\">" << number(v.value, 4) << "</td><td class=\"num\">"
+        << number(v.worst_time_s, 4) << "</td><td class=\"num\">" << number(v.limit, 4) << "</td></tr>\n";
+    b << "</table>\n";
+  }
+  return b.str();
 }
 
 void write(const std::string& dir, const std::string& title, const std::string& body) {
@@ -101,11 +135,7 @@ void write_run_page(const Scenario& scenario, const RunResult& result, const log
   }
 
   const double dt = scenario.machine.cycle_time_s();
-  b << "<h2>Expectations</h2>\n<p>" << log.facts.verdict_pass << " passed, " << log.facts.verdict_fail
-    << " failed; the scenario has " << (log.facts.expectations >= 0 ? log.facts.expectations
-                                                                     : static_cast<int>(scenario.expectations.size() +
-                                                                                        scenario.expected_events.size()))
-    << "</p>\n";
+  b << "<h2>Expectations</h2>\n<p>" << e(describe_expectation_counts(log.facts)) << "</p>\n";
   std::string expectations;
   for (const logger::LoggedEvent& ev : log.events) {
     if (ev.event.verdict == Verdict::none) continue;
@@ -121,7 +151,7 @@ void write_run_page(const Scenario& scenario, const RunResult& result, const log
   if (log.facts.realtime || log.real_time) b << "<h2>Real time</h2>\n" << html_pre(format_real_time(log));
 
   b << "<h2>Limits (offline check)</h2>\n";
-  if (check) b << html_pre(format_limits(*check));
+  if (check) b << limits_section(*check);
   else b << "<p>" << (logged ? "The log has no scenario (HIL_SCENARIO): no limits to check against." : "No log.")
          << "</p>\n";
 

@@ -22,6 +22,7 @@
 #include "process.hpp"
 #include "program_check.hpp"
 #include "report.hpp"
+#include "root_cause.hpp"
 #include "run_identity.hpp"
 #include "run_secret.hpp"
 #include "run_log.hpp"
@@ -61,6 +62,10 @@ std::string default_run_dir(const std::string& name) {
   return "runs/" + name + "-" + time;
 }
 
+int rig_port(const RunOptions& options) {
+  return options.port > 0 ? options.port : 20000 + static_cast<int>(::getpid() % 20000);
+}
+
 std::string rig_url(int port) {
   return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
 }
@@ -80,9 +85,6 @@ void validate(const Scenario& scenario) {
   }
 }
 
-int rig_port(const RunOptions& options) {
-  return options.port > 0 ? options.port : 20000 + static_cast<int>(::getpid() % 20000);
-}
 
 // Every node a process of its own on a private udpm port; returns their
 // exit statuses and says them in `processes`, and how the lock-step nodes
@@ -141,6 +143,7 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
   nodes.push_back(std::make_unique<Process>("plc_sim", node_args("plc_sim"), node_output("plc_sim"), lock_step));
   std::vector<std::string> cnc_args = node_args("cnc");
   if (options.answer_timeout_ms > 0) cnc_args.insert(cnc_args.end(), {"--answer-timeout-ms", std::to_string(options.answer_timeout_ms)});
+  if (options.pace > 0) cnc_args.insert(cnc_args.end(), {"--pace", std::to_string(options.pace)});
   Process cnc("cnc", cnc_args, node_output("cnc"), lock_step);
   placed = cpu >= 0 ? std::string(scenario.realtime ? ", the cycle nodes on CPU " : ", the lock-step nodes on CPU ") +
                           std::to_string(cpu)
@@ -182,10 +185,12 @@ std::vector<logger::ProcessExit> run_processes(const Scenario& scenario, const f
   return exits;
 }
 
-// What the summary table and JUnit show of a failed run: the first failed
-// expectation, else the first reason.
-std::string first_failure(const logger::RunLog& log, const logger::RunVerdict& verdict) {
+// What the summary table and JUnit show of a failed run: the root cause,
+// else the first failed expectation, else the first reason.
+std::string first_failure(const logger::RunLog& log, const logger::RunVerdict& verdict,
+                          const std::vector<std::string>& causes) {
   if (verdict.passed) return "";
+  if (!causes.empty()) return causes.front();
   for (const logger::LoggedEvent& e : log.events)
     if (e.event.verdict == Verdict::fail) return e.source + ": " + e.event.message;
   return verdict.reasons.empty() ? "" : verdict.reasons.front();
@@ -211,7 +216,7 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
   std::string where;
   if (options.in_process) {
     where = "in-process (every node in the hil process, no network)";
-    exits = run_in_process(resolved, result.log_file, (dir / "nodes.out").string(), std::stoll(run_id));
+    exits = run_in_process(resolved, result.log_file, (dir / "nodes.out").string(), std::stoll(run_id), options.pace);
     for (const logger::ProcessExit& e : exits)
       processes << (e.name == "cnc" ? "" : ", ") << e.name << ' ' << (e.status ? std::to_string(*e.status) : "?");
   } else {
@@ -271,10 +276,13 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
                           << (found ? "found" : "NOT FOUND") << '\n';
     }
   }
-  const logger::RunVerdict verdict = logger::judge_run(exits, log.facts, check_failure);
+  logger::RunVerdict verdict = logger::judge_run(exits, log.facts, check_failure);
   result.passed = verdict.passed;
   result.simulated_s = (log.last_cycle + 1) * scenario.machine.cycle_time_s();
-  result.first_failure = first_failure(log, verdict);
+  const std::vector<std::string> causes =
+      verdict.passed ? std::vector<std::string>{} : root_causes(scenario, log, node_errors, check ? &*check : nullptr);
+  result.first_failure = first_failure(log, verdict, causes);
+  verdict.reasons.insert(verdict.reasons.begin(), causes.begin(), causes.end());
 
   std::ostringstream out;
   const double simulated_s = result.simulated_s;
@@ -303,9 +311,7 @@ RunResult run_one(const Scenario& scenario, const std::string& run_dir, const Ru
       << '\n'
       << "exit status: " << processes.str() << '\n'
       << "refused traffic: " << logger::describe_refused(log.facts) << '\n'
-      << "expectations (plc_sim): " << log.facts.verdict_pass << " passed, " << log.facts.verdict_fail
-      << " failed; the scenario has " << log.facts.expectations << ", plc_sim published "
-      << (log.facts.verdicts_announced ? std::to_string(*log.facts.verdicts_announced) : "?") << '\n';
+      << describe_expectation_counts(log.facts) << '\n';
   if (log.facts.realtime) out << format_real_time(log);
   PagePlots plots{{}, "the log has no scenario (HIL_SCENARIO): nothing names the axes and limits"};
   if (check) plots.note = draw_plots(log, *check, (dir / "plots").string(), &plots.images);
@@ -382,6 +388,10 @@ ScenarioSet load_valid_scenario_set(const RunOptions& options) {
       v.scenario.realtime = true;
       v.scenario.resolved["run"]["realtime"] = true;
     }
+    if (v.scenario.realtime && options.pace > 0)
+      throw ConfigError(options.scenario_file + ": --pace is for lock-step; a real-time run (" +
+                        (options.realtime ? std::string("--realtime") : std::string("run.realtime")) +
+                        ") ticks at the machine's cycle time already");
     // One thread cannot give each node its own wake-ups on the wall clock.
     if (v.scenario.realtime && options.in_process)
       throw ConfigError(options.scenario_file + ": --in-process runs in lock-step only; real-time mode (" +

@@ -18,6 +18,7 @@ struct RunOptions {
   int fifo_priority = 0;     // SCHED_FIFO priority of the lock-step nodes, one for all; 0: normal scheduling
   bool realtime = false;     // real-time mode (RIG-6) whatever the scenario's run.realtime says
   int answer_timeout_ms = 0;  // the lock-step CNC's watchdog per cycle (RIG-6); 0: the cnc's default, 5000
+  double pace = 0;            // lock-step no faster than pace x real time (--pace); 0: as fast as it goes
 };
 
 struct RunResult {
@@ -45,5 +46,7 @@ std::string default_run_dir(const std::string& name);
 // The rig's LCM URL for a port: multicast that never leaves the machine
 // (ttl=0) and a receive buffer deep enough for lock-step bursts.
 std::string rig_url(int port);
+// The run's udpm port: --port, else derived from the process id.
+int rig_port(const RunOptions& options);
 
 }  // namespace hil::rig

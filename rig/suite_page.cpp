@@ -22,7 +22,8 @@ void write_suite_page(const SuiteResult& suite, const std::string& suite_name) {
   b << "<h1>" << escape_markup(suite_name) << "</h1>\n<p><span class=\"verdict " << verdict << "\">" << verdict
     << "</span></p>\n<p>" << describe_counts(suite) << "; <a href=\"summary.txt\">summary.txt</a></p>\n"
     << "<table>\n<tr><th>scenario</th><th>verdict</th><th>simulated</th><th>x real</th><th>first failure</th></tr>\n";
-  for (const RunSummary& r : suite.runs) {
+  for (const RunSummary* run : failures_first(suite)) {
+    const RunSummary& r = *run;
     const bool ran = r.outcome == Outcome::passed || r.outcome == Outcome::failed;
     const fs::path page = fs::path(r.run_dir) / "report.html";
     std::string name = escape_markup(r.scenario_file);

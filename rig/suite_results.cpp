@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "json_text.hpp"
 #include "suite_progress.hpp"
 
 namespace hil::rig {
@@ -23,26 +24,20 @@ std::string read_file(const std::string& path) {
   return all.str();
 }
 
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (const unsigned char c : text) {
-    if (c == '"' || c == '\\') out += {'\\', static_cast<char>(c)};
-    else if (c == '\n') out += "\\n";
-    else if (c == '\t') out += "\\t";
-    else if (c < 0x20) {
-      char u[8];
-      std::snprintf(u, sizeof u, "\\u%04x", c);
-      out += u;
-    } else out += static_cast<char>(c);
-  }
-  return out + '"';
+std::string iso_time(std::time_t time) {
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%S", std::localtime(&time));
+  return buf;
 }
 
-std::string iso_time_now() {
-  const std::time_t now = std::time(nullptr);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%S", std::localtime(&now));
-  return buf;
+int rank(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::failed: return 0;
+    case Outcome::error: return 1;
+    case Outcome::skipped: return 2;
+    case Outcome::passed: return 3;
+  }
+  return 1;
 }
 
 std::string host_name() {
@@ -77,12 +72,21 @@ std::string describe_counts(const SuiteResult& suite) {
          format_fixed(suite.wall_s, 1) + " s wall)";
 }
 
+std::vector<const RunSummary*> failures_first(const SuiteResult& suite) {
+  std::vector<const RunSummary*> runs;
+  for (const RunSummary& r : suite.runs) runs.push_back(&r);
+  std::stable_sort(runs.begin(), runs.end(),
+                   [](const RunSummary* a, const RunSummary* b) { return rank(a->outcome) < rank(b->outcome); });
+  return runs;
+}
+
 std::string format_summary_table(const SuiteResult& suite) {
   size_t width = std::string("scenario").size();
   for (const RunSummary& r : suite.runs) width = std::max(width, r.scenario_file.size());
   std::ostringstream out;
   out << std::left << std::setw(static_cast<int>(width)) << "scenario" << "  verdict  simulated  x real  first failure\n";
-  for (const RunSummary& r : suite.runs) {
+  for (const RunSummary* run : failures_first(suite)) {
+    const RunSummary& r = *run;
     const bool ran = r.outcome == Outcome::passed || r.outcome == Outcome::failed;
     std::string failure = r.first_failure;
     if (failure.size() > 100) failure = failure.substr(0, 97) + "...";
@@ -103,7 +107,7 @@ void write_junit(const SuiteResult& suite, const std::string& suite_name, const 
     << c.errors << "\" skipped=\"" << c.skipped << "\" time=\"" << format_fixed(suite.wall_s, 3) << "\">\n"
     << "  <testsuite name=\"" << escape_markup(suite_name) << "\" tests=\"" << suite.runs.size() << "\" failures=\""
     << c.failed << "\" errors=\"" << c.errors << "\" skipped=\"" << c.skipped << "\" time=\""
-    << format_fixed(suite.wall_s, 3) << "\" timestamp=\"" << iso_time_now() << "\" hostname=\"" << escape_markup(host_name())
+    << format_fixed(suite.wall_s, 3) << "\" timestamp=\"" << iso_time(suite.started) << "\" hostname=\"" << escape_markup(host_name())
     << "\">\n";
   for (const RunSummary& r : suite.runs) {
     const fs::path file(r.scenario_file);

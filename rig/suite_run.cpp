@@ -37,13 +37,6 @@ struct Running {
   std::unique_ptr<Process> process;
 };
 
-std::string last_line(const std::string& file) {
-  std::ifstream in(file);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (line.find_first_not_of(" \t") != std::string::npos) last = line;
-  return last;
-}
 
 }  // namespace
 
@@ -69,12 +62,14 @@ SuiteResult run_suite(const SuiteOptions& options, const SuiteListener& listener
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
   SuiteResult result;
+  result.started = std::time(nullptr);
   result.out_dir = options.out_dir;
   result.runs.resize(options.files.size());
 
   // What cannot run is known before anything starts: a file the loader
   // refuses is an ERROR, a real-time scenario in an in-process suite SKIPPED.
   std::deque<Pending> pending;
+  bool failure_seen = false;  // for -x
   for (size_t i = 0; i < options.files.size(); ++i) {
     RunSummary& s = result.runs[i];
     s.scenario_file = options.files[i];
@@ -88,6 +83,7 @@ SuiteResult run_suite(const SuiteOptions& options, const SuiteListener& listener
     } catch (const std::exception& e) {
       s.outcome = Outcome::error;
       s.first_failure = e.what();
+      failure_seen = true;
       if (listener.finished) listener.finished(s);
       continue;
     }
@@ -118,6 +114,7 @@ SuiteResult run_suite(const SuiteOptions& options, const SuiteListener& listener
                              "--port", std::to_string(base_port + slot)});
     if (options.run.in_process) args.push_back("--in-process");
     if (options.run.realtime) args.push_back("--realtime");
+    if (options.run.pace > 0) args.insert(args.end(), {"--pace", std::to_string(options.run.pace)});
     // Runs side by side each get a CPU of their own for their lock-step chain.
     const int cpu = options.run.cpu != -2 ? options.run.cpu : jobs > 1 ? static_cast<int>(slot % cpus) : -2;
     if (cpu != -2) args.insert(args.end(), {"--cpu", std::to_string(cpu)});
@@ -141,14 +138,24 @@ SuiteResult run_suite(const SuiteOptions& options, const SuiteListener& listener
       // No summary: the run did not get as far (exit 2: refused; or a crash).
       s.outcome = Outcome::error;
       s.wall_s = seconds_since(r.start);
-      const std::string said = last_line(output);
+      const std::string said = last_line_of(output);
       s.first_failure = "hil run exited with status " + std::to_string(status) + (said.empty() ? "" : ": " + said);
     }
+    failure_seen = failure_seen || s.outcome == Outcome::failed || s.outcome == Outcome::error;
     if (listener.finished) listener.finished(s);
   };
 
   // A real-time run has the machine to itself: its ticks are on the wall clock.
   while (!pending.empty() || !running.empty()) {
+    if (options.exit_first && failure_seen) {
+      for (const Pending& p : pending) {
+        RunSummary& s = result.runs[p.index];
+        s.outcome = Outcome::skipped;
+        s.first_failure = "not run: -x stops the suite at its first failure";
+        if (listener.finished) listener.finished(s);
+      }
+      pending.clear();
+    }
     const bool exclusive = !running.empty() && running.front().realtime;
     while (!pending.empty() && !exclusive && static_cast<int>(running.size()) < jobs &&
            (!pending.front().realtime || running.empty())) {

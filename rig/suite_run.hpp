@@ -3,6 +3,7 @@
 // Each scenario runs as a `hil run FILE` child of its own, up to --jobs at
 // once, each on its own udpm port (or in its own network namespace), its
 // outcome read back from the summary.yaml it leaves in its run folder.
+#include <ctime>
 #include <functional>
 #include <optional>
 #include <string>
@@ -19,12 +20,14 @@ struct SuiteOptions {
   int jobs = 1;
   std::string out_dir;      // a folder per scenario below it
   bool netns = false;       // each run in a network namespace of its own (root)
+  bool exit_first = false;  // -x: after the first FAILED or ERROR start no more (the rest SKIPPED)
   RunOptions run;           // what every run gets: bin_dir, port (the first of `jobs`), mode, placement
 };
 
 struct SuiteResult {
   std::vector<RunSummary> runs;  // in the order of the files
   double wall_s = 0;
+  std::time_t started = 0;  // wall clock at the suite's start
   std::string out_dir;
   bool passed() const;           // no run FAILED or had an ERROR (SKIPPED ones aside; an empty shard passes)
 };

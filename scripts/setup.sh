@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 
 packages="build-essential cmake pkg-config iproute2 util-linux git python3
   liblcm-dev liblcm-bin liblcm-java libjchart2d-java default-jdk-headless
-  libeigen3-dev libspdlog-dev catch2 libcli11-dev libyaml-cpp-dev gnuplot-nox libsodium-dev"
+  libeigen3-dev libspdlog-dev catch2 libcli11-dev libyaml-cpp-dev gnuplot-nox libsodium-dev
+  python3-yaml python3-jsonschema"
 
 missing=""
 for p in $packages; do
@@ -21,4 +22,10 @@ if [ -n "$missing" ]; then
 fi
 
 cmake -S . -B build "$@"
-cmake --build build -j "$(nproc)"
+# HIL_BUILD_TARGETS: only these (and what they need), e.g. "hil" for the
+# demo: hil and the nodes it starts, without the tests and benchmarks.
+if [ -n "${HIL_BUILD_TARGETS:-}" ]; then
+  cmake --build build -j "$(nproc)" --target $HIL_BUILD_TARGETS
+else
+  cmake --build build -j "$(nproc)"
+fi

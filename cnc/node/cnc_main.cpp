@@ -22,6 +22,10 @@ int main(int argc, char** argv) {
   app.add_option("--answer-timeout-ms", answer_timeout_ms, "lock-step watchdog per cycle")->check(CLI::PositiveNumber);
   app.add_option("--logger-timeout-ms", logger_timeout_ms, "the logger's heartbeat may fall silent this long")
       ->check(CLI::PositiveNumber);
+  double pace = 0;
+  app.add_option("--pace", pace,
+                 "lock-step no faster than PACE x real time (1: as the machine would; the log is the same)")
+      ->check(CLI::PositiveNumber);
   std::string rerun_log;
   app.add_option("--rerun", rerun_log,
                  "instead of a live run: feed the PLC inputs recorded in this log into this build in lock-step "
@@ -57,6 +61,6 @@ int main(int argc, char** argv) {
         hil::lcm_support::with_faults(hil::lcm_support::run_bus(options), scenario.faults, "cnc");
     return hil::cnc_node::run_cnc(
         scenario, text, *bus, options.run_id, participants,
-        {std::chrono::milliseconds(answer_timeout_ms), std::chrono::milliseconds(logger_timeout_ms)}, process);
+        {std::chrono::milliseconds(answer_timeout_ms), std::chrono::milliseconds(logger_timeout_ms), pace}, process);
   });
 }

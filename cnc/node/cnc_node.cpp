@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <optional>
+#include <thread>
 #include <map>
 #include <set>
 
@@ -42,14 +44,14 @@ int64_t wall_us() {
 class CncNode : public cnc::CyclePolicy {
  public:
   CncNode(const Scenario& scenario, const std::string& scenario_text, lcm_support::Bus& bus, int64_t run_id,
-          std::vector<std::string> participants, CncTimeouts timeouts, lcm_support::RealTimeProcess process)
+          std::vector<std::string> participants, CncTiming timing, lcm_support::RealTimeProcess process)
       : scenario_(scenario), machine_(scenario.machine), scenario_text_(scenario_text), bus_(bus),
-        inbox_(bus, run_id), participants_(std::move(participants)), timeouts_(timeouts),
+        inbox_(bus, run_id), participants_(std::move(participants)), timing_(timing),
         lock_step_(machine_, std::count(participants_.begin(), participants_.end(), "logger") > 0,
-                   timeouts.answer.count(), timeouts.logger.count(), &scenario_.faults),
+                   timing.answer.count(), timing.logger.count(), &scenario_.faults),
         realtime_(scenario.realtime), process_(std::move(process)),
         real_time_(machine_, std::count(participants_.begin(), participants_.end(), "logger") > 0,
-                   timeouts.logger.count()),
+                   timing.logger.count()),
         ticker_(clock_, static_cast<int64_t>(machine_.cycle_time_us) * 1000) {
     for (size_t i = 0; i < machine_.axes.size(); ++i)
       inbox_.on<hil::axis_state_t>(channels::axis_state(machine_.axes[i].name),
@@ -110,6 +112,7 @@ class CncNode : public cnc::CyclePolicy {
     // Before the output: an answer can only follow it.
     if (realtime_) real_time_.begin(k);
     else lock_step_.begin(k);
+    if (!pace_start_ && timing_.pace > 0) pace_start_ = clock_type::now();
     for (const auto& m : cnc_node::cycle_messages(channel, machine_, events, k, inbox_.run_id()))
       bus_.publish(m.channel, m.bytes.data(), static_cast<uint32_t>(m.bytes.size()));
     if (realtime_) take_arrived();  // sends the cycle now, not at the next tick
@@ -127,6 +130,7 @@ class CncNode : public cnc::CyclePolicy {
     if (realtime_) return real_time_answers(k);
     wait_for_answers();
     wait_for_logger();
+    keep_pace(k);
     cnc_node::LockStep::Taken taken = lock_step_.take();
     return cnc::CycleAnswers{taken.control, cnc_node::drive_errors(machine_, taken.axis_errors),
                              std::move(taken.lost)};
@@ -190,7 +194,7 @@ class CncNode : public cnc::CyclePolicy {
     m.rig_version = HIL_VERSION;
     m.scenario_name = scenario_.name;
     m.cycle_us = machine_.cycle_time_us;
-    m.answer_timeout_ms = static_cast<int32_t>(timeouts_.answer.count());
+    m.answer_timeout_ms = static_cast<int32_t>(timing_.answer.count());
     m.scenario_bytes = static_cast<int64_t>(scenario_text_.size() + scenario_.nc_program.size());
     m.scenario_digest = scenario_digest(scenario_text_, scenario_.nc_program);
     m.participants = participants_;
@@ -250,7 +254,7 @@ class CncNode : public cnc::CyclePolicy {
   // (a loaded host): they are waited for on, and said so each timeout.
   void wait_for_answers() {
     const auto since = clock_type::now();
-    auto give_up = since + timeouts_.answer;
+    auto give_up = since + timing_.answer;
     auto next_alive = since + alive_every, next_report = since;
     while (!lock_step_.complete()) {
       if (clock_type::now() >= next_alive) {
@@ -271,7 +275,7 @@ class CncNode : public cnc::CyclePolicy {
                        lock_step_.cycle(), names, std::chrono::duration<double>(clock_type::now() - since).count());
           next_report = clock_type::now() + alive_every;
         }
-        give_up = clock_type::now() + timeouts_.answer;
+        give_up = clock_type::now() + timing_.answer;
         continue;
       }
       if (bus_.handle_timeout(static_cast<int>(std::max<int64_t>(left.count(), 0)) + 1) < 0)
@@ -279,10 +283,27 @@ class CncNode : public cnc::CyclePolicy {
     }
   }
 
+  // Paced (CncTiming::pace): until cycle k may end, taking what arrives
+  // and saying the CNC is alive meanwhile.
+  void keep_pace(int64_t k) {
+    if (!pace_start_) return;
+    const auto due = *pace_start_ + std::chrono::duration_cast<clock_type::duration>(std::chrono::duration<double>(
+                                        static_cast<double>(k + 1) * machine_.cycle_time_s() / timing_.pace));
+    auto next_alive = clock_type::now() + alive_every;
+    while (clock_type::now() < due) {
+      if (bus_.handle_timeout(0) < 0) throw std::runtime_error("LCM receive failed");
+      std::this_thread::sleep_until(std::min({due, next_alive, clock_type::now() + std::chrono::milliseconds(10)}));
+      if (clock_type::now() >= next_alive) {
+        announce_alive();
+        next_alive = clock_type::now() + alive_every;
+      }
+    }
+  }
+
   // Until the logger is within LockStep::logger_window cycles, or lost; a
   // logger whose process is alive and running is waited for.
   void wait_for_logger() {
-    auto next_report = clock_type::now() + timeouts_.logger;
+    auto next_report = clock_type::now() + timing_.logger;
     const auto liveness = [this](const std::string& name) { return process_of(name); };
     while (lock_step_.check_logger(wall_us(), liveness) || lock_step_.logger_behind()) {
       if (clock_type::now() > next_report) {
@@ -290,7 +311,7 @@ class CncNode : public cnc::CyclePolicy {
                      "host?)",
                      lock_step_.cycle());
         announce_alive();
-        next_report = clock_type::now() + std::min<clock_type::duration>(timeouts_.logger, alive_every);
+        next_report = clock_type::now() + std::min<clock_type::duration>(timing_.logger, alive_every);
       }
       if (bus_.handle_timeout(10) < 0) throw std::runtime_error("LCM receive failed");
     }
@@ -302,7 +323,8 @@ class CncNode : public cnc::CyclePolicy {
   lcm_support::Bus& bus_;
   lcm_support::Inbox inbox_;
   std::vector<std::string> participants_;
-  CncTimeouts timeouts_;
+  CncTiming timing_;
+  std::optional<clock_type::time_point> pace_start_;  // cycle 0's start, if paced
   cnc_node::LockStep lock_step_;
   bool realtime_;
   lcm_support::RealTimeProcess process_;
@@ -316,8 +338,8 @@ class CncNode : public cnc::CyclePolicy {
 }  // namespace
 
 int run_cnc(const Scenario& scenario, const std::string& scenario_text, lcm_support::Bus& bus, int64_t run_id,
-            std::vector<std::string> participants, CncTimeouts timeouts, const lcm_support::RealTimeProcess& process) {
-  CncNode node(scenario, scenario_text, bus, run_id, std::move(participants), timeouts, process);
+            std::vector<std::string> participants, CncTiming timing, const lcm_support::RealTimeProcess& process) {
+  CncNode node(scenario, scenario_text, bus, run_id, std::move(participants), timing, process);
   return node.run();
 }
 

@@ -15,9 +15,13 @@
 
 namespace hil::cnc_node {
 
-struct CncTimeouts {
+struct CncTiming {
   std::chrono::milliseconds answer{5000};  // the lock-step watchdog per cycle
   std::chrono::milliseconds logger{2000};  // the logger's heartbeat may fall silent this long
+  // Lock-step at a pace to watch (issue 37, `hil run --pace F`): cycle k ends
+  // no earlier than (k + 1) cycle times / F after cycle 0 began; 0: as fast as
+  // the answers come. The run and its log are the same at any pace.
+  double pace = 0;
 };
 
 // Waits (20 s at most) for every participant's READY, publishes the
@@ -27,7 +31,7 @@ struct CncTimeouts {
 // the machine's cycle time and never wait for answers (real_time_answers.hpp,
 // tick_clock.hpp); `process` says how the process was scheduled.
 int run_cnc(const Scenario& scenario, const std::string& scenario_text, lcm_support::Bus& bus, int64_t run_id,
-            std::vector<std::string> participants, CncTimeouts timeouts,
+            std::vector<std::string> participants, CncTiming timing,
             const lcm_support::RealTimeProcess& process = {});
 
 }  // namespace hil::cnc_node

@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -68,7 +69,11 @@ LoggerNode::LoggerNode(lcm_support::Bus& bus, const std::string& path, int64_t r
 void LoggerNode::seal() {
   hil::log_summary_t m;
   m.run_id = run_id_;
-  m.utime = 0;
+  // Stamped when sealed, never before the last record: a log player and
+  // the CSV's log_t_s see the seal at the end (issue 37; it was 0).
+  const int64_t now_us =
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  m.utime = std::max(now_us, last_utime_);
   m.cycle = attendance_.end_cycle();
   m.recorded = recorded_;
   m.missing = attendance_.missing();
@@ -77,7 +82,7 @@ void LoggerNode::seal() {
   m.rejected = lcm_support::to_message(refused());
   m.n_rejected = static_cast<int16_t>(m.rejected.size());
   m.socket_drops = socket_drops_ = socket_drops();
-  write(channels::log_end, m, 0);
+  write(channels::log_end, m, m.utime);
   log_.flush();
 }
 
@@ -159,6 +164,7 @@ void LoggerNode::write(const std::string& channel, const Message& m, int64_t uti
 
 void LoggerNode::write_raw(const std::string& channel, const void* data, uint32_t size, int64_t utime) {
   log_.write(channel, data, size, utime);
+  last_utime_ = std::max(last_utime_, utime);
   ++recorded_;
 }
 

@@ -88,6 +88,7 @@ class LoggerNode {
   Attendance attendance_;
   bool told_participants_ = false;  // by hil run; else the manifest's
   int64_t recorded_ = 0, heard_ = 0;
+  int64_t last_utime_ = 0;  // the latest record's timestamp
   int64_t recorded_cycle_ = -1;
   int64_t socket_drops_ = -1;
   bool scenario_mismatch_ = false;

@@ -67,9 +67,9 @@ expect_output "expect[0].when.stop_conditions_r.contains[0]: unknown stop condit
 printf 'name: x\nmachine: %s\nnc_program: |\n  N10 G01 X1 F600\n    N20 G41 X2\n  N30 M30\n' \
   "$HIL_SOURCE/config/xyz_machine.yaml" >"$WORK/refused_nc.yaml"
 expect_status 2 "$hil" run "$WORK/refused_nc.yaml" --out "$WORK/run11" --port 7750
-expect_output "refused_nc.yaml: nc_program line 2 column 7 (N20), error 20131: G41 tool radius compensation (left) is not supported by this rig"
+expect_output "refused_nc.yaml: nc_program line 2 (scenario file line 5) column 7 (N20), error 20131: G41 tool radius compensation (left) is not supported by this rig"
 [ ! -e "$WORK/run11/run.lcmlog" ] || fail "a refused program started the rig"
 expect_status 2 "$hil" validate "$WORK/refused_nc.yaml" "$HIL_SOURCE/scenarios/demo.yaml"
 expect_output "scenarios/demo.yaml: ok"
-expect_output "refused_nc.yaml: nc_program line 2 column 7 (N20)"
+expect_output "refused_nc.yaml: nc_program line 2 (scenario file line 5) column 7 (N20)"
 expect_status 0 "$hil" validate "$HIL_SOURCE/scenarios/programs/planes_g18_g19.yaml"

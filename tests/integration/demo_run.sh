@@ -18,3 +18,14 @@ for node in cnc logger plc_sim axis_sim_X axis_sim_Y axis_sim_Z; do
 done
 expect_status 0 "$hil" check "$WORK/run/run.lcmlog"
 expect_output "CHECK PASSED"
+# Issue 37 (9): the README's figures are this build's: the demo's cycles in
+# its report, hil rerun's on its log, the number of LCM types lcm-spy finds.
+readme="$HIL_SOURCE/README.md"
+cycles=$(sed -n 's/^log: .* messages, \([0-9]*\) cycles = .*/\1/p' "$WORK/run/report.txt" | head -1)
+grep -q "^log: runs/demo_xyz-.../run.lcmlog ([0-9]* messages, $cycles cycles = " "$readme" ||
+  fail "README's demo report does not say $cycles cycles"
+expect_status 0 "$hil" rerun "$WORK/run/run.lcmlog"
+rerun=$(sed -n 's/^\(identical: [0-9]* cycles, [0-9]* messages\).*/\1/p' "$WORK/last.out")
+grep -qF "# $rerun" "$readme" || fail "README's rerun example does not say '$rerun'"
+types=$(ls "$HIL_SOURCE"/lcmtypes/*.lcm | wc -l)
+grep -q "Found $types LCM types" "$readme" || fail "README does not say 'Found $types LCM types'"

@@ -46,8 +46,12 @@ assert abs(float(last["position_m"]) - 0.010) < 1e-6, last
 assert abs(max(float(r["position_m"]) for r in x) - 0.100) < 1e-6
 hli = rows("HLI_STATE")
 assert hli[-1]["channel_state"] == "2" and hli[-1]["block_nr_r"] == "110", hli[-1]  # PROGRAM_END at N110
-assert hli[0]["axis_name[0]"] == "X" and "axis_position_r[2]_m" in hli[0]
-assert abs(float(hli[-1]["axis_position_r[2]_m"]) - 0.010) < 1e-6
+assert hli[-1]["channel_state_name"] == "PROGRAM_END", hli[-1]
+assert hli[0]["axis_name[0]"] == "X" and "axis_position_r.Z_m" in hli[0]
+assert abs(float(hli[-1]["axis_position_r.Z_m"]) - 0.010) < 1e-6
+# The logger's seal is stamped when it is written, after everything it seals (issue 37; it was 0).
+seal = rows("HIL_LOG_END")[0]
+assert float(hli[-1]["log_t_s"]) <= float(seal["log_t_s"]) < 600, (hli[-1]["log_t_s"], seal["log_t_s"])
 assert max(float(r["path_velocity_m_s"]) for r in hli) > 0.04  # F3000 mm/min = 0.05 m/s
 scenario = rows("HIL_SCENARIO")
 assert len(scenario) == 1 and "N110 M30" in scenario[0]["nc_program"], scenario[0].keys()  # multi-line, quoted

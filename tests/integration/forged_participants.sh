@@ -25,7 +25,7 @@ grep -q "^  logger: AXIS_Y_STATE: 1 unauthenticated; HIL_EVENT: 1 unauthenticate
 grep -q "^  plc_sim: HIL_EVENT: 1 unauthenticated; HIL_PARTICIPANT: [0-9]* unauthenticated" "$WORK/last.out" ||
   fail "plc_sim did not refuse the forged RUN_END"
 # Not recorded: plc_sim's own verdicts are all the log holds.
-expect_output "expectations (plc_sim): 3 passed, 0 failed; the scenario has 3, plc_sim published 3"
+expect_output "expectations (plc_sim): 3 passed, 0 failed of 3 verdict(s): the scenario's 3"
 expect_status 0 "$hil" check "$WORK/forged/run.lcmlog"
 
 # The logger killed, its heartbeats forged: lost all the same.

@@ -3,8 +3,11 @@
 # as processes; a scenario with variants: one per variant and one for the
 # set) and in a suite's folder: well-formed HTML (every element closed, as
 # Python's html.parser sees it), the verdict, the expectations PASS/FAIL,
-# the plots embedded as PNG data: URIs (or why there are none); the suite
-# page's links lead to the run pages that exist.
+# the plots embedded as SVG data: URIs in a zoomable box (PNG where there is
+# no SVG; or why there are none), the limits as a table (issue 37); the
+# plots: commanded and actual apart, the PLC's stop conditions and where
+# each expectation was judged; the suite page's links lead to the run pages
+# that exist.
 . "$(dirname "$0")/lib.sh"
 scenarios="$HIL_SOURCE/tests/integration/scenarios"
 cd "$WORK"
@@ -51,26 +54,39 @@ class Page(html.parser.HTMLParser):
         self.text += [data]
 
 def pngs(page):
-    prefix = "data:image/png;base64,"
-    found = [s for s in page.images if s.startswith(prefix)]
-    for s in found:
-        assert base64.b64decode(s[len(prefix):], validate=True).startswith(b"\x89PNG\r\n\x1a\n"), page.path
-    return len(found)
+    """The figures: SVG (zoomable) or PNG data: URIs, each what it says it is."""
+    found = 0
+    for s in page.images:
+        for prefix, magic in (("data:image/png;base64,", b"\x89PNG\r\n\x1a\n"), ("data:image/svg+xml;base64,", b"<?xml")):
+            if s.startswith(prefix):
+                assert base64.b64decode(s[len(prefix):], validate=True).startswith(magic), page.path
+                found += 1
+    return found
 
 # A run that passed, in-process and as processes: verdict, expectation, plots.
 for d in ["runs/suite/a_short_move", "proc"]:
     p = Page(d + "/report.html")
     assert '<span class="verdict PASSED">PASSED</span>' in p.raw, d
     assert "PASS" in p.cells and "PASS at" in p.text, d  # the expectation's row
-    assert "1 passed, 0 failed; the scenario has 1" in p.text, d
+    assert "1 passed, 0 failed of 1 verdict(s): the scenario's 1" in p.text, d
     assert pngs(p) >= 4, d  # axis_X, axis_Y, axis_Z, xy, path
+    assert 'class="zoom"' in p.raw and "addEventListener('wheel'" in p.raw, d
+    assert sum(1 for i in p.images if i.startswith("data:image/svg+xml")) >= 4, d
     assert "Limits (offline check)" in p.text and "commanded |v|" in p.text, d
+    assert "<pre>" not in p.raw.split("Limits (offline check)")[1].split("<h2>")[0], d  # a table, not text
+    assert "P-AXIS-00442" in p.text and "margin" in p.text, d
+    path = open(d + "/plots/path.gp").read()
+    assert path.count("set arrow from") == 1 and '"#2ca02c"' in path, d  # the expectation's cycle, PASS
+    assert "stop_conditions_r" in path and "override.state_r" in path, d
+    axis = open(d + "/plots/axis_X.gp").read()
+    assert '"#801f77b4" t "commanded"' in axis and '"#000000" t "actual"' in axis, d
     assert "report.txt" in p.links, d
 
 # A run that failed: the verdict, why, the failed expectation.
 p = Page("runs/suite/b_impossible/report.html")
 assert '<span class="verdict FAILED">FAILED</span>' in p.raw
 assert "because" in p.text and "FAIL" in p.cells and "FAIL at" in p.text and "99" in p.text
+assert '"#d62728"' in open("runs/suite/b_impossible/plots/path.gp").read()  # where it FAILED
 assert pngs(p) >= 4
 
 # Variants: a page per variant and one for the set, which links to them.

@@ -18,7 +18,7 @@ sed -e "s|X: 1}|X: 99}|" -e "s|^machine: .*|machine: $HIL_SOURCE/config/xyz_mach
 expect_status 1 "$bin/hil" run "$WORK/impossible.yaml" --out "$WORK/impossible" --port 7750 --bin-dir "$bin"
 expect_output "FAILED"
 expect_output "  because 1 expectation(s) failed"
-expect_output "expectations (plc_sim): 0 passed, 1 failed; the scenario has 1, plc_sim published 1"
+expect_output "expectations (plc_sim): 0 passed, 1 failed of 1 verdict(s): the scenario's 1"
 expect_output "plc_sim 0"
 
 expect_status 0 "$bin/hil" run "$scenarios/short_move.yaml" --out "$WORK/late" --port 7751 --bin-dir "$bin"

@@ -6,6 +6,7 @@
 // LCM's own self-test subscription when it ended. Prints the losses with the
 // logger's subscription (channels::every_channel_but_self_test) and with
 // ".*"; exits 1 if the logger's lost any.
+#include "command_line.hpp"
 #include <lcm/lcm-cpp.hpp>
 
 #include <atomic>
@@ -48,12 +49,14 @@ int handled(const std::string& url, const std::string& pattern, int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: lcm_queue_check URL ATTEMPTS\n");
-    return 2;
-  }
-  const std::string url = argv[1];
-  const int attempts = std::stoi(argv[2]), n = 200;
+  CLI::App app{"lcm_queue_check: the logger's subscription against LCM 1.3.1's queue accounting: no message lost "
+               "while nodes start beside it (RIG-9, docs/RELIABILITY.md)"};
+  std::string url;
+  int attempts = 0;
+  app.add_option("url", url, "udpm URL (ttl=0)")->required();
+  app.add_option("attempts", attempts, "rounds of 200 messages")->required()->check(CLI::PositiveNumber);
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
+  const int n = 200;
   int lost = 0, lost_any = 0, attempts_losing = 0, attempts_losing_any = 0;
   for (int a = 0; a < attempts; ++a) {
     const int l = n - handled(url, hil::channels::every_channel_but_self_test, n);

@@ -8,6 +8,7 @@
 // cost the bus no memory and are counted per channel; a 200 kB message that
 // liblcm fragments among them still arrives whole.
 // Run in a network namespace with a multicast route (scripts/in_netns.sh).
+#include "command_line.hpp"
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -101,9 +102,14 @@ int fragment_flood(const std::string& url) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  CLI::App app{"udpm_bus_check: the udpm bus's batched sending against LCM's own receiver (issue 17), or its "
+               "receiving side under fragment headers announcing 256 MiB (fragment-flood, RIG-9)"};
   // A deep receive buffer: the burst (a 100 kB message among 200) must not overflow it under load.
-  const std::string url = argc > 1 ? argv[1] : "udpm://239.255.76.67:7798?ttl=0&recv_buf_size=4194304";
-  if (argc > 2 && std::string(argv[2]) == "fragment-flood") return fragment_flood(url);
+  std::string url = "udpm://239.255.76.67:7798?ttl=0&recv_buf_size=4194304", mode;
+  app.add_option("url", url, "udpm URL (ttl=0)")->capture_default_str();
+  app.add_option("mode", mode, "fragment-flood, or nothing for the sending check")->check(CLI::IsMember({"fragment-flood"}));
+  HIL_PARSE_COMMAND_LINE(app, argc, argv);
+  if (mode == "fragment-flood") return fragment_flood(url);
   lcm::LCM reader(url);
   if (!reader.good()) return std::fprintf(stderr, "cannot open LCM on %s\n", url.c_str()), 1;
   std::vector<std::string> received;

@@ -123,6 +123,7 @@ TEST_CASE("RIG-4 export: every channel a CSV file, SI units, RFC 4180 strings, u
     hli.lift_active = {true, false};
     hli.lift_suppressed = {false, false};
     hli.override.state_r = 1000;  // 0.1 %
+    hli.stop_conditions_r = hil::stop_condition::feedhold;
     write_bytes(log, "HLI_STATE", encoded(hli), 1'000'400);
     hil::hli_state_t one = hli;  // an array of another length: empty cells
     one.cycle = 7;
@@ -186,20 +187,22 @@ TEST_CASE("RIG-4 export: every channel a CSV file, SI units, RFC 4180 strings, u
   REQUIRE(hli.size() == 3);
   r = row(hli, 1);
   CHECK(r["channel_state"] == "1");
+  CHECK(r["channel_state_name"] == "ACTIVE");  // issue 37: names beside the numbers
+  CHECK(r["stop_conditions_r_names"] == "FEEDHOLD");
   CHECK(num(r["dist_prog_start_m"]) == Approx(1.0));
   CHECK(num(r["path_velocity_m_s"]) == Approx(0.05));
   CHECK(r["axis_name[1]"] == "C");
-  CHECK(num(r["axis_position_r[0]_m"]) == Approx(0.0123456));
-  CHECK(num(r["axis_position_r[1]_rad"]) == Approx(M_PI / 2));
-  CHECK(r["lift_active[0]"] == "1");
-  CHECK(r["lift_active[1]"] == "0");
+  CHECK(num(r["axis_position_r.X_m"]) == Approx(0.0123456));  // by the axis' name (issue 37)
+  CHECK(num(r["axis_position_r.C_rad"]) == Approx(M_PI / 2));
+  CHECK(r["lift_active.X"] == "1");
+  CHECK(r["lift_active.C"] == "0");
   CHECK(num(r["override.state_r_ratio"]) == Approx(1.0));
   CHECK(r.count("insert_cmd.state_r.position_at_next_stop[2]_m") == 1);
   CHECK(r.count("block_search.state_r.continuation_distance_m") == 1);
   r = row(hli, 2);
-  CHECK(num(r["axis_position_r[0]_m"]) == Approx(-0.0005));
+  CHECK(num(r["axis_position_r.X_m"]) == Approx(-0.0005));
   CHECK(r["axis_name[1]"] == "");
-  CHECK(r["axis_position_r[1]_rad"] == "");
+  CHECK(r["axis_position_r.C_rad"] == "");
 
   r = row(read_csv((dir / "csv" / "HIL_EVENT.csv").string()), 1);
   CHECK(r["message"] == "a \"quoted\", two-line\nmessage");

@@ -249,13 +249,15 @@ TEST_CASE("LIFT-2 RIG-4 run log: HLI_STATE's lift_active gives an axis the overl
   std::remove(path.c_str());
 }
 
-TEST_CASE("RIG-6 run log: comparison finds the first differing message, or none", "[log]") {
+TEST_CASE("RIG-6 run log: comparison finds the first differing message and names its cycle, field and both values",
+          "[log]") {
   const std::string a = temp_path("a.lcmlog"), b = temp_path("b.lcmlog"), c = temp_path("c.lcmlog");
   write_log(a, 100, false);
   write_log(b, 100, false);
   write_log(c, 101, false);
   CHECK(logger::compare_run_logs(a, b).empty());
-  CHECK(logger::compare_run_logs(a, c) == "channel AXIS_X_CMD differs at message 1");
+  CHECK(logger::compare_run_logs(a, c) ==
+        "channel AXIS_X_CMD differs at message 1 (axis_setpoint_t, cycle 1): position_m 0.0001 vs 0.000101");
   for (const auto& p : {a, b, c}) std::remove(p.c_str());
 }
 
@@ -278,11 +280,15 @@ TEST_CASE("RIG-4 plots: the traces and a gnuplot script with limit lines and sha
   REQUIRE(files.images.size() == 5);  // axis_X, axis_Y, axis_Z, xy, path
   CHECK(std::filesystem::path(files.images[3]).filename() == "xy.png");
   CHECK(std::filesystem::path(files.images[0]).filename() == "axis_X.png");
-  std::ifstream script(files.script);
-  const std::string text((std::istreambuf_iterator<char>(script)), std::istreambuf_iterator<char>());
-  CHECK_THAT(text, Catch::Contains("set object 1 rect from 0.0005, graph 0"));  // the violation, shaded
-  CHECK_THAT(text, Catch::Contains("4000.000000 w l dt 2 lc rgb \"red\" t \"P-AXIS-00442\""));
+  auto read = [](const std::string& file) {
+    std::ifstream in(file);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const std::string text = read(files.script), axis_x = read(dir + "/axis_X.gp");
+  CHECK_THAT(axis_x, Catch::Contains("set object 1 rect from 0.0005, graph 0"));  // the violation, shaded
+  CHECK_THAT(axis_x, Catch::Contains("4000.000000 w l dt 2 lc rgb \"red\" t \"P-AXIS-00442\""));
   CHECK_THAT(text, Catch::Contains("set output \"path.png\""));
+  CHECK_THAT(text, Catch::Contains("set output \"path.svg\""));  // issue 37: zoomable in report.html
   std::ifstream data(dir + "/axis_X.tsv");
   int lines = 0;
   for (std::string line; std::getline(data, line);) lines += line[0] == '#' ? 0 : 1;
