@@ -14,8 +14,8 @@
 
 #include "config_error.hpp"
 #include "live_spy.hpp"
-#include "scenario_set.hpp"
 #include "scenario_files.hpp"
+#include "scenario_set.hpp"
 #include "suite_page.hpp"
 #include "suite_progress.hpp"
 #include "suite_results.hpp"
