@@ -69,13 +69,10 @@ std::string explain_yaml_error(const std::string& text, const YAML::Exception& e
   }
   const std::string& said = error.msg;
   // A flow collection may span lines: one still open where the parser gave up is the cause.
-  {
-    if (const std::optional<Opening> open = unclosed_bracket(lines, at)) {
-      return "line " + std::to_string(open->line + 1) + ": the '" + open->bracket + "' opened here is not closed (a '" +
-             (open->bracket == '{' ? '}' : ']') + "' is missing before line " + std::to_string(at + 1) + ")" +
-             shown(lines, open->line, open->column);
-    }
-  }
+  if (const std::optional<Opening> open = unclosed_bracket(lines, at))
+    return "line " + std::to_string(open->line + 1) + ": the '" + open->bracket + "' opened here is not closed (a '" +
+           (open->bracket == '{' ? '}' : ']') + "' is missing before line " + std::to_string(at + 1) + ")" +
+           shown(lines, open->line, open->column);
   if (said == "illegal map value" && at < lines.size() && column < lines[at].size() && lines[at][column] == ':' &&
       lines[at].find(": ") < column)
     return "line " + std::to_string(at + 1) + ": a second ': ' in one line (a value holding ': ' goes in quotes)" +
@@ -86,7 +83,7 @@ std::string explain_yaml_error(const std::string& text, const YAML::Exception& e
            ": the indentation does not fit the lines above (a key indented more or less than the keys beside it, "
            "or a list item '- ' beside keys)" +
            shown(lines, at, column);
-  if (said.find("illegal block entry") != std::string::npos || said.find("block entry") != std::string::npos)
+  if (said.find("block entry") != std::string::npos)  // "illegal block entry", ...
     return "line " + std::to_string(at + 1) + ": a list item '- ' where a key or value belongs (check the indentation)" +
            shown(lines, at, column);
   if (said.find("end of") != std::string::npos && said.find("quoted") != std::string::npos)
