@@ -7,9 +7,11 @@
 //   build/bin/channel_fuzz --runs 10000 --seed 1
 //   build/bin/channel_fuzz --seed 4711 --runs 1 --print-program   (reproduce one)
 //   build/bin/channel_fuzz --seed 4711 --runs 1 --trace > trace.tsv
+//   build/bin/channel_fuzz --seed 1 --runs 8 --program-kind arcs --golden tests/golden/fuzz   (docs/GOLDEN.md)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <map>
@@ -19,6 +21,7 @@
 
 #include "command_line.hpp"
 #include "channel_fuzz.hpp"
+#include "fuzz_golden_trace.hpp"
 
 using namespace hil;
 using namespace hil::fuzz;
@@ -86,6 +89,33 @@ void minimize(const FuzzRun& failed, FuzzOptions options, bool isolated) {
   std::printf("    -> %s\n", describe(shown, found).c_str());
 }
 
+// Writes the run's golden trace, or compares it with the one written;
+// false if it differs or is missing.
+bool golden_step(const logger::GoldenTrace& trace, const std::string& dir, const FuzzRun& run, bool write) {
+  const std::string path = fuzz_golden_path(dir, run.kind, run.seed);
+  try {
+    if (write) {
+      std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+      trace.write(path);
+      return true;
+    }
+    if (!std::filesystem::exists(path)) {
+      std::printf("GOLDEN seed %llu (%s): no %s (write it with --write-golden)\n",
+                  static_cast<unsigned long long>(run.seed), to_string(run.kind), path.c_str());
+      return false;
+    }
+    const logger::TraceComparison c = logger::compare_golden_traces(logger::GoldenTrace::read(path), trace);
+    if (c.same()) return true;
+    std::printf("GOLDEN seed %llu (%s): %lld difference(s) beyond 1e-9 mm against %s\n",
+                static_cast<unsigned long long>(run.seed), to_string(run.kind), static_cast<long long>(c.count),
+                path.c_str());
+    for (const std::string& d : c.differences) std::printf("  %s\n", d.c_str());
+  } catch (const std::exception& e) {
+    std::printf("GOLDEN seed %llu (%s): %s\n", static_cast<unsigned long long>(run.seed), to_string(run.kind), e.what());
+  }
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -119,6 +149,12 @@ int main(int argc, char** argv) {
   int64_t chaos = -1;
   app.add_option("--chaos-cycles", chaos, "random PLC phase in cycles instead of the seed's (with --program: as minimized)");
   app.add_flag("--minimize", shrink, "shrink each failing run's program by deleting lines while it fails alike");
+  std::string golden_dir;
+  bool write_golden = false;
+  app.add_option("--golden", golden_dir,
+                 "compare each run's outputs with its golden trace DIR/<kind>/seed_<seed>.trace.xz within 1e-9 mm "
+                 "(in this process; docs/GOLDEN.md)");
+  app.add_flag("--write-golden", write_golden, "write the golden traces instead (with --golden)")->needs("--golden");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   if (kind_name != "all") {
     const auto kind = parse_program_kind(kind_name);
@@ -142,7 +178,7 @@ int main(int argc, char** argv) {
   if (trace) {
     std::printf("cycle\tx\ty\tz\tv_path\tblock_nr\tblock_count\tdps_mm\tstate\tbackward\tshort_cut\tm_request\t"
                 "feedhold\toverride\tddtg\tbackward_cmd\tm_ack\n");
-    options.observer = [](int64_t k, const cnc::Channel& ch, const HliControl& c) {
+    options.observer = [](int64_t k, const cnc::Channel& ch, const HliControl& c, const std::vector<Event>&) {
       const HliState& s = ch.hli();
       const auto& p = ch.setpoints();
       std::printf("%lld\t%.9f\t%.9f\t%.9f\t%.6f\t%lld\t%lld\t%.7f\t%s\t%d\t%d\t%d\t%d\t%d\t%d\t%d\t%d\n",
@@ -156,6 +192,17 @@ int main(int argc, char** argv) {
                   c.backward_motion.command_w && c.backward_motion.enable_w, c.m_function_ack.command_w);
     };
   }
+
+  FuzzGoldenRecorder golden;
+  if (!golden_dir.empty()) {
+    if (trace) {
+      std::fprintf(stderr, "--golden and --trace both observe the runs: one at a time\n");
+      return 2;
+    }
+    golden.attach(options);
+    no_fork = true;  // the trace is recorded in this process
+  }
+  int64_t golden_different = 0;
 
   const auto t0 = std::chrono::steady_clock::now();
   int64_t cycles = 0, failed_runs = 0, failures = 0;
@@ -184,6 +231,7 @@ int main(int argc, char** argv) {
     approach_max = std::max(approach_max, run.at_stop_approach_max_mm);
     with_random_plc += run.chaos_cycles > 0;
     if (runs == 1 && print_program && !trace) std::printf("%s", run.program.text.c_str());
+    if (!golden_dir.empty()) golden_different += !golden_step(golden.take(run), golden_dir, run, write_golden);
     if (run.passed()) continue;
     ++failed_runs;
     failures += static_cast<int64_t>(run.failures.size());
@@ -231,5 +279,8 @@ int main(int argc, char** argv) {
                 static_cast<long long>(failed_by_kind[kind]));
   for (const auto& [what, n] : by_invariant)
     std::printf("  %6lld x %s\n", static_cast<long long>(n), what.c_str());
-  return failed_runs > 0 ? 1 : 0;
+  if (!golden_dir.empty() && !write_golden)
+    std::printf("golden traces (%s): %lld of %lld runs differ\n", golden_dir.c_str(),
+                static_cast<long long>(golden_different), static_cast<long long>(runs));
+  return failed_runs > 0 || golden_different > 0 ? 1 : 0;
 }

@@ -43,23 +43,30 @@ class Row {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.15g", value);  // 15 digits: no round-off noise from the unit conversion
     cells_.emplace_back(buf);
+    kinds_.push_back(CellKind::number);
   }
   void integer(const std::string& name, int64_t value) {
     names_.push_back(name);
-    if (!names_only_) cells_.push_back(std::to_string(value));
+    if (names_only_) return;
+    cells_.push_back(std::to_string(value));
+    kinds_.push_back(CellKind::integer);
   }
   void flag(const std::string& name, bool value) { integer(name, value ? 1 : 0); }
   void text(const std::string& name, const std::string& value) {
     names_.push_back(name);
-    if (!names_only_) cells_.push_back(csv_quoted(value));
+    if (names_only_) return;
+    cells_.push_back(csv_quoted(value));
+    kinds_.push_back(CellKind::text);
   }
   const std::vector<std::string>& names() const { return names_; }
   const std::vector<std::string>& cells() const { return cells_; }
+  const std::vector<CellKind>& kinds() const { return kinds_; }
   int64_t cycle = 0;
 
  private:
   bool names_only_;
   std::vector<std::string> names_, cells_;
+  std::vector<CellKind> kinds_;
 };
 
 std::string at(const std::string& name, size_t i) { return name + "[" + std::to_string(i) + "]"; }
@@ -443,7 +450,7 @@ std::optional<MessageColumns> message_columns(const LogRecord& record) {
   const Kind* k = kind_of(record);
   Row row(false);
   if (!k || !k->columns(record, row)) return std::nullopt;
-  return MessageColumns{k->type, k->simulated_time, row.cycle, row.names(), row.cells()};
+  return MessageColumns{k->type, k->simulated_time, row.cycle, row.names(), row.cells(), row.kinds()};
 }
 
 std::string csv_quoted(const std::string& text) {

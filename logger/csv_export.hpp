@@ -40,13 +40,17 @@ CsvExport export_csv(const std::string& log_path, const std::string& dir);
 
 struct LogRecord;
 
-// One message as the CSV writes it: its columns' names and cells (texts
-// quoted); none if it is no type of the rig or does not decode.
+enum class CellKind : char { number = 'n', integer = 'i', text = 't' };
+
+// One message as the CSV writes it: its columns' names and cells (numbers
+// "%.15g" in SI units, texts quoted); none if it is no type of the rig or
+// does not decode.
 struct MessageColumns {
   std::string type;
   bool simulated_time = false;  // its cycle is the time it belongs to (CsvChannel::simulated_time)
   int64_t cycle = 0;
   std::vector<std::string> names, cells;
+  std::vector<CellKind> kinds;  // one per cell
 };
 std::optional<MessageColumns> message_columns(const LogRecord& record);
 

@@ -8,6 +8,7 @@
 #include "command_line.hpp"
 #include "config_error.hpp"
 #include "export_command.hpp"
+#include "golden_command.hpp"
 #include "file_schema.hpp"
 #include "plots.hpp"
 #include "report.hpp"
@@ -126,8 +127,20 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--plots", plot_dir, "also draw the PNG plots (gnuplot) into this folder");
 
   std::vector<std::string> pair;
-  auto* compare_cmd = app.add_subcommand("compare", "compare two logs message by message (determinism)");
-  compare_cmd->add_option("logs", pair, "two LCM event logs")->required()->expected(2)->check(CLI::ExistingFile);
+  auto* compare_cmd = app.add_subcommand(
+      "compare", "compare two logs message by message (determinism), or a log with a golden trace within 1e-9 mm "
+                 "(docs/GOLDEN.md)");
+  compare_cmd->add_option("logs", pair, "two LCM event logs or golden traces (.trace.xz)")
+      ->required()
+      ->expected(2)
+      ->check(CLI::ExistingFile);
+
+  std::string golden_out;
+  auto* golden_cmd = app.add_subcommand(
+      "golden", "write a log's golden trace: setpoints, HLI state and events, compact, for `hil compare` against a "
+                "later build (docs/GOLDEN.md)");
+  golden_cmd->add_option("log", log_file, "LCM event log of a rig run")->required()->check(CLI::ExistingFile);
+  golden_cmd->add_option("--out", golden_out, "the trace file (.trace.xz)")->required();
 
   std::string spy_source = hil::rig::default_lcm_url;
   double speed = 1.0;
@@ -187,11 +200,8 @@ int main(int argc, char** argv) {
     }
     if (*check_cmd) return check_log(log_file, plot_dir);
     if (*export_cmd) return hil::rig::export_csv_command(log_file, csv_dir);
-    if (*compare_cmd) {
-      const std::string difference = hil::logger::compare_run_logs(pair[0], pair[1]);
-      std::cout << (difference.empty() ? "identical" : difference) << '\n';
-      return difference.empty() ? 0 : 1;
-    }
+    if (*compare_cmd) return hil::rig::compare_command(pair[0], pair[1], std::cout);
+    if (*golden_cmd) return hil::rig::write_golden_trace(log_file, golden_out, std::cout);
   } catch (const hil::ConfigError& e) {
     std::cerr << "hil: " << e.what() << '\n';
     return 2;

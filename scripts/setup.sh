@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages="build-essential cmake pkg-config iproute2 util-linux git python3
   liblcm-dev liblcm-bin liblcm-java libjchart2d-java default-jdk-headless
-  libeigen3-dev libspdlog-dev catch2 libcli11-dev libyaml-cpp-dev gnuplot-nox libsodium-dev
+  libeigen3-dev libspdlog-dev catch2 libcli11-dev libyaml-cpp-dev gnuplot-nox libsodium-dev liblzma-dev
   python3-yaml python3-jsonschema"
 
 missing=""

@@ -61,6 +61,7 @@ class Channel : private PathObserver {
   // The path's, with a lift axis' own in a lift range.
   const std::vector<AxisSetpoint>& setpoints() const { return setpoints_; }
   const HliState& hli() const { return hli_; }
+  const MachineConfig& machine() const { return machine_; }
   // Events raised since the last call.
   std::vector<Event> take_events() { return events_.take(); }
   // The blocks it holds now (issue 17: bounded, whatever the program's length).

@@ -221,8 +221,10 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   const size_t max_failures = 20;
 
   // search_failed: the cycle a block search failed (state 3): its error event is expected.
+  std::vector<Event> step_events;  // the last check_events' (for the observer)
   auto check_events = [&](int64_t k, bool search_failed = false, const Event* refused = nullptr) {
-    for (const Event& e : channel.take_events()) {
+    step_events = channel.take_events();
+    for (const Event& e : step_events) {
       ++run.events;
       if (e.id == 50810) {
         motion_ended_early = true;
@@ -261,7 +263,6 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       fail({"exception", k, "", "", 0, 0, previous_line, "Channel::step threw a non-standard exception"});
       break;
     }
-    if (options.observer) options.observer(k, channel, control);
     const HliState& s = channel.hli();
     const std::vector<cnc::AxisSetpoint>& sp = channel.setpoints();
     const int64_t line = s.block_count_r;
@@ -284,6 +285,7 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       restart_refused = restart_refused || (refused && started);
     }
     check_events(k, search_failed, refused ? &*refused : nullptr);
+    if (options.observer) options.observer(k, channel, control, step_events);
     if (started) last_start_position = previous_position;
     if (s.reset.state_r) {
       ++resets;

@@ -83,8 +83,10 @@ struct FuzzOptions {
   // Resets with block searches (DPS-3) from the PLC, on a random stream of
   // their own: false runs every seed exactly as before them.
   bool block_search = true;
-  // Called after every step (the bench's --trace).
-  std::function<void(int64_t cycle, const cnc::Channel& channel, const HliControl& control)> observer;
+  // Called after every step with its events (the bench's --trace, golden traces).
+  std::function<void(int64_t cycle, const cnc::Channel& channel, const HliControl& control,
+                     const std::vector<Event>& events)>
+      observer;
   // Instead of the generated program, this text (a shrunk one, the bench's
   // --minimize), with the seed's PLC; the end point and the final
   // dist_prog_start are not checked (the generator's expectations are gone).

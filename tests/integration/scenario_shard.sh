@@ -6,6 +6,8 @@
 # must name exactly the shard's files: every N-th from the K-th in path order.
 # A real-time scenario cannot run in-process: SKIPPED here, run as processes
 # by realtime_demo.sh and fault_injection.sh.
+# Issue 35: every run's log is then compared with its golden trace
+# (tests/golden/, docs/GOLDEN.md) within 1e-9 mm per setpoint.
 # Usage: scenario_shard.sh K/N
 . "$(dirname "$0")/lib.sh"
 
@@ -32,3 +34,5 @@ doc = json.load(open(results))
 assert doc["counts"]["scenarios"] == len(files) and doc["counts"]["failed"] == 0, doc["counts"]
 print(f"shard {shard}: {len(files)} scenario(s), JUnit and JSON agree")
 PY
+
+python3 "$HIL_SOURCE/tests/tools/golden_scenarios.py" check "$hil" "$WORK/results.json" "$HIL_SOURCE/tests/golden"
