@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "path_segment.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 
@@ -13,7 +14,7 @@ namespace hil::cnc {
 // between two samples is missed: below 0.1 mm of path, ~1e-3 mm in axis).
 std::optional<double> covered_until_axis_reaches(const std::vector<Motion>& motions, size_t axis, double position,
                                                  const MachineConfig& machine, bool modulo) {
-  constexpr double on = 1e-7;  // mm: standing on the position
+  constexpr double on = tolerance::standing_on_mm;
   double covered = 0;
   for (const Motion& motion : motions) {
     const PathSegment seg(motion, machine);
@@ -41,7 +42,7 @@ std::optional<double> covered_until_axis_reaches(const std::vector<Motion>& moti
       if (std::abs(f1) <= on || (f0 < 0) != (f1 < 0)) {
         double lo = s0, hi = s1;
         if (std::abs(f1) > on)
-          for (int k = 0; k < 100 && hi - lo > 1e-12; ++k) {
+          for (int k = 0; k < 100 && hi - lo > tolerance::bisection_share; ++k) {
             const double mid = 0.5 * (lo + hi);
             if ((f(mid) < 0) == (f0 < 0)) lo = mid;
             else hi = mid;

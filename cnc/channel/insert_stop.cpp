@@ -7,6 +7,7 @@
 #include <string>
 
 #include "axis_crossing.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -140,7 +141,7 @@ bool InsertStop::leave(PathInterpolator& path, double t, double distance_mm) {
     place(path, t, next, d);
   }
   // At the end of the program (or of the stored contour) no next one follows.
-  if (path.placed_stop() && path.placed_stop()->covered <= 1e-9) {
+  if (path.placed_stop() && path.placed_stop()->covered <= tolerance::length_mm) {
     mark_.reset();
     path.release_stop();
   }
@@ -193,7 +194,7 @@ void InsertStop::write(HliState& hli, const PathInterpolator& path) const {
   const auto& placed = path.placed_stop();
   if (!mark_ || !placed || commanded) return;  // ISC-2: -1 while the stop is not found in the program
   const bool landed_at_end =
-      mark_->command.axis_nr == 0 && placed->covered < std::abs(mark_->target_mm - mark_->base_mm) - 1e-6;
+      mark_->command.axis_nr == 0 && placed->covered < std::abs(mark_->target_mm - mark_->base_mm) - tolerance::no_length_mm;
   const double distance = mark_->command.axis_nr == 0 && !landed_at_end
                               ? mark_->target_mm
                               : mark_->base_mm + mark_->sign * placed->covered;

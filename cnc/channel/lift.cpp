@@ -7,6 +7,7 @@
 #include "lift_limits.hpp"
 #include "position_profile.hpp"
 #include "velocity_profile.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 
@@ -100,7 +101,7 @@ void Lift::stop_now() {
 void Lift::finish() {
   const double pos = range().command.pos;
   // Lifting lands with the path by construction; Advanced Lifting before it.
-  if (advanced_ && !advanced_->landed() && (std::abs(state_.p - pos) > 1e-9 || std::abs(state_.v) > 1e-9))
+  if (advanced_ && !advanced_->landed() && (std::abs(state_.p - pos) > tolerance::length_mm || std::abs(state_.v) > tolerance::velocity_mm_s))
     missed_landing_ = true;
   if (blocks_run_) {
     parked_axis_ = static_cast<size_t>(range().command.axis);
@@ -215,7 +216,7 @@ void Lift::start_pending(int32_t override_value) {
 
 // Parked until the path takes the lift axis over from there (a next program).
 void Lift::apply_parked(std::vector<AxisSetpoint>& setpoints) {
-  if (parked_ && std::abs(setpoints[parked_axis_].position - parked_->position) <= 1e-9) parked_.reset();
+  if (parked_ && std::abs(setpoints[parked_axis_].position - parked_->position) <= tolerance::length_mm) parked_.reset();
   if (parked_) setpoints[parked_axis_] = *parked_;
 }
 

@@ -8,6 +8,7 @@
 
 #include "motion_parts.hpp"
 #include "path_interpolator.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -63,11 +64,11 @@ void PathInterpolator::push(PushedMotion m, bool stop_before) {
     // The part before the stop ends as programmed (a corner there is not
     // contoured): the path stands on the mark.
     const std::optional<Corner> ends_at_stop = m.out ? std::optional<Corner>(Corner{}) : std::nullopt;
-    if (s <= shortest_rest_mm) {  // at its start
+    if (s <= tolerance::shortest_part_mm) {  // at its start
       look_ahead_.flush();
       place_stop(segment.position(0));
       stop_before = true;
-    } else if (s < length - shortest_rest_mm) {
+    } else if (s < length - tolerance::shortest_part_mm) {
       // ISC-3: the block is split where the stop lies; the look-ahead brakes
       // to v = 0 at the split as before an M function, and the path enters
       // the second part from standstill.
@@ -86,7 +87,7 @@ void PathInterpolator::push(PushedMotion m, bool stop_before) {
       place_stop(point);
       hand_over(std::move(second), true);
       return;
-    } else if (s <= length + shortest_rest_mm) {  // at its end
+    } else if (s <= length + tolerance::shortest_part_mm) {  // at its end
       const AxisValues end = m.motion.end;
       m.out = ends_at_stop;
       hand_over(std::move(m), stop_before);
@@ -142,10 +143,10 @@ void PathInterpolator::push_curve_part(size_t block, const CurvePart& part) {
   chord.start = first;
   chord.end = last;
   const double covered = j.covered(part.from, part.to);
-  if (!(length > shortest_rest_mm)) {
+  if (!(length > tolerance::shortest_part_mm)) {
     // Too short to tell apart from the curve (10 nm): a straight line, so
     // that the path goes on from where it stands.
-    if (length > 1e-9) {
+    if (length > tolerance::length_mm) {
       PushedMotion m{block, chord, 0.0, covered, b.slope, std::nullopt, std::nullopt, false};
       m.chord_of = part;
       push(std::move(m));
@@ -164,8 +165,8 @@ void PathInterpolator::push_curve_part(size_t block, const CurvePart& part) {
     look_ahead_.push(block, std::move(piece), b.slope, stop_before);
   };
   const double to_stop = stop_covered_ ? *stop_covered_ - pushed_covered_ : covered;
-  if (to_stop < covered - shortest_rest_mm) {
-    if (to_stop <= shortest_rest_mm) {  // at its start
+  if (to_stop < covered - tolerance::shortest_part_mm) {
+    if (to_stop <= tolerance::shortest_part_mm) {  // at its start
       look_ahead_.flush();
       place_stop(first);
       hand_over_part(part.from, part.to, true);
@@ -219,7 +220,7 @@ void PathInterpolator::restart_here(double t) {
         a.motion.type != b.motion.type)
       return false;
     for (size_t i = 0; i < a.motion.end.size(); ++i)
-      if (std::abs(a.motion.end[i] - b.motion.start[i]) > 1e-12 * (1 + std::abs(b.motion.start[i]))) return false;
+      if (std::abs(a.motion.end[i] - b.motion.start[i]) > tolerance::same_point_share * (1 + std::abs(b.motion.start[i]))) return false;
     return true;
   };
   if (stop.curve) {

@@ -6,6 +6,7 @@
 #include "motion_parts.hpp"
 #include "position_profile.hpp"
 #include "velocity_profile.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 PathInterpolator::PathInterpolator(const MachineConfig& machine, PathObserver& observer)
@@ -147,7 +148,7 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
       // holds the path there (on the same tolerance), so the plan must end
       // at rest there (fuzz seed 870: 6.7 mm/s to 0 in one cycle).
       const double to_stop = *stop_at_ - travelled_before_front_;
-      if (to_stop <= length + 1e-9 * (1 + *stop_at_)) {
+      if (to_stop <= length + tolerance::length_at(*stop_at_)) {
         length = std::min(length, to_stop);
         v_end = 0;
       }
@@ -157,7 +158,7 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
     // reaches v_end there, past the transition it had to keep (fuzz seed
     // 12016401: 1.57 mm beyond, X's acceleration 24,512 for 2,000).
     plan_meets_end_ =
-        plan_.end().v <= v_end + 1e-9 * (1 + v_end) && plan_.end().p <= length + 1e-9 * (1 + length);
+        plan_.end().v <= v_end + tolerance::velocity_mm_s * (1 + v_end) && plan_.end().p <= length + tolerance::length_at(length);
     if (plan_meets_end_) break;
     Stretch longer = look_ahead_.stretch(state.v, through);
     if (longer.length <= st.length) break;  // nothing to run through
@@ -180,8 +181,8 @@ std::vector<Motion> PathInterpolator::path_ahead() const {
         to_end = std::max(to_end, std::abs(here[i] - motion.end[i]));
         to_start = std::max(to_start, std::abs(here[i] - motion.start[i]));
       }
-      if (to_start <= 1e-9) ahead.push_back(motion);
-      else if (to_end > 1e-9) ahead.push_back(motion_from(motion, here));
+      if (to_start <= tolerance::length_mm) ahead.push_back(motion);
+      else if (to_end > tolerance::length_mm) ahead.push_back(motion_from(motion, here));
       front = false;
       continue;
     }
@@ -228,7 +229,7 @@ void PathInterpolator::release_stop() {
 bool PathInterpolator::at_stop(double t) const {
   if (!stop_at_ || !standing(t)) return false;
   const double p = travelled_before_front_ + (look_ahead_.empty() ? 0.0 : path_state_at(t).p);
-  return std::abs(p - *stop_at_) <= 1e-9 * (1 + std::abs(p));
+  return std::abs(p - *stop_at_) <= tolerance::length_at(p);
 }
 
 void PathInterpolator::finish_front() {
@@ -299,9 +300,9 @@ PathProgress PathInterpolator::interpolate(double t) {
   while (!look_ahead_.empty()) {
     const double length = look_ahead_.front().segment.length();
     const bool plan_ended = since_plan_start(t) >= plan_.duration();
-    if (path.p < length && !(plan_ended && path.p >= length - 1e-9 * (1 + length))) break;
+    if (path.p < length && !(plan_ended && path.p >= length - tolerance::length_at(length))) break;
     // A stop at the block end: the path stands on the end, in the block.
-    if (plan_ended && stop_at_ && std::abs(travelled_before_front_ + length - *stop_at_) <= 1e-9 * (1 + *stop_at_))
+    if (plan_ended && stop_at_ && std::abs(travelled_before_front_ + length - *stop_at_) <= tolerance::length_at(*stop_at_))
       break;
     const AxisValues end_point = look_ahead_.front().segment.end();
     finish_front();
@@ -318,8 +319,8 @@ PathProgress PathInterpolator::interpolate(double t) {
     // the braking's last residual acceleration round the corner (KRN-3:
     // 40,004 mm/s^3 for a limit of 40,000).
     double t_from = t;
-    const bool at_rest = std::abs(plan_.end().v) <= 1e-9;  // mm/s: 0 but for round-off
-    const bool stops_on_end = at_rest && std::abs(plan_.end().p - length) <= 1e-9 * (1 + length);
+    const bool at_rest = std::abs(plan_.end().v) <= tolerance::velocity_mm_s;
+    const bool stops_on_end = at_rest && std::abs(plan_.end().p - length) <= tolerance::length_at(length);
     if (plan_ended || stops_on_end) {
       t_from = plan_start_cycles_ * machine_.cycle_time_s() + plan_.duration();
       path = plan_.end();

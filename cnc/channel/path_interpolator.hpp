@@ -177,10 +177,6 @@ class PathInterpolator {
   PathProgress interpolate(double t);
 
  private:
-  // A part shorter than this is not split off or moved (10 nm): a shorter
-  // arc could not be told from a full circle.
-  static constexpr double shortest_rest_mm = 1e-5;
-
   // What enters the look-ahead: look_ahead_filling.cpp.
   void refill();
   // [from, to] of a contouring curve, run from `to` to `from` if reversed.

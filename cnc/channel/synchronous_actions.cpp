@@ -1,4 +1,5 @@
 #include "synchronous_actions.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 
@@ -53,7 +54,7 @@ bool SynchronousActions::run(const HliControl& control, double t, HliState& hli)
       }
     } else {
       if (dwell_end_ < 0) dwell_end_ = t + action.dwell_s;
-      if (t < dwell_end_ - 1e-9) return false;
+      if (t < dwell_end_ - tolerance::time_s) return false;
       dwell_end_ = -1;
     }
     actions_.pop_front();

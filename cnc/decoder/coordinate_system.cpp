@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "value_ranges.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 
@@ -36,6 +37,6 @@ CoordinateSystem CoordinateSystem::parse(const std::string& components, const Pa
 
 bool CoordinateSystem::keeps_xy_plane() const { return keeps_axis(2); }
 
-bool CoordinateSystem::keeps_axis(int k) const { return std::abs(transform_.linear()(k, k) - 1.0) < 1e-12; }
+bool CoordinateSystem::keeps_axis(int k) const { return std::abs(transform_.linear()(k, k) - 1.0) < tolerance::direction; }
 
 }  // namespace hil::cnc

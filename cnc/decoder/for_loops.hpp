@@ -11,6 +11,7 @@
 
 #include "line_source.hpp"
 #include "parameter_expression.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc::decoding {
 
@@ -33,7 +34,7 @@ class ForLoops {
     int parameter;
     double end;
     double step;
-    bool done(double value) const { return step > 0 ? value > end + 1e-9 : value < end - 1e-9; }
+    bool done(double value) const { return step > 0 ? value > end + tolerance::length_mm : value < end - tolerance::length_mm; }
   };
 
   size_t begin_loop(const std::string& code, LineStore& lines, size_t i, ParameterValues& parameters);

@@ -8,6 +8,7 @@
 
 #include "value_ranges.hpp"
 #include "words.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc::decoding {
 namespace {
@@ -35,7 +36,7 @@ void correct_centre(Motion& m) {
   const int x = m.plane[0], y = m.plane[1];
   const double chord_x = m.end[x] - m.start[x], chord_y = m.end[y] - m.start[y];
   const double chord = std::hypot(chord_x, chord_y);
-  if (!(chord > 1e-9)) return;  // a full circle (end = start) has no bisector
+  if (!(chord > tolerance::length_mm)) return;  // a full circle (end = start) has no bisector
   const double mid_x = (m.start[x] + m.end[x]) / 2, mid_y = (m.start[y] + m.end[y]) / 2;
   const double nx = -chord_y / chord, ny = chord_x / chord;
   const double along = (m.center[0] - mid_x) * nx + (m.center[1] - mid_y) * ny;
@@ -47,7 +48,7 @@ void check_on_circle(const Motion& m, const DecoderState& state) {
   const int x = m.plane[0], y = m.plane[1];
   const double r_start = std::hypot(m.start[x] - m.center[0], m.start[y] - m.center[1]);
   const double r_end = std::hypot(m.end[x] - m.center[0], m.end[y] - m.center[1]);
-  if (r_start < 1e-6) throw LineError{"arc radius is zero"};
+  if (r_start < tolerance::no_length_mm) throw LineError{"arc radius is zero"};
   checked_length(r_start, "arc radius");
   const double limit = state.machine.radius_difference_limit(r_start);
   if (std::abs(r_start - r_end) > limit) {
@@ -82,7 +83,7 @@ Eigen::Vector2d centre_by_radius(const Eigen::Vector2d& start, const Eigen::Vect
                                  const DecoderState& state) {
   const Eigen::Vector2d chord = end - start;
   const double half = chord.norm() / 2;
-  if (!(half > 1e-9)) throw LineError{"a full circle cannot be programmed with R: give its centre (I J K)"};
+  if (!(half > tolerance::length_mm)) throw LineError{"a full circle cannot be programmed with R: give its centre (I J K)"};
   const double radius = std::abs(r);
   if (radius < half - state.machine.radius_difference_limit(radius)) {
     std::ostringstream msg;
@@ -130,7 +131,7 @@ AxisValues programmed_target(const std::vector<std::optional<double>>& axis_word
   const Eigen::Vector3d machine = to_machine(state, point);
   for (int k = 0; k < 3; ++k) {
     const int a = main_axis(state, k);
-    target[a] = std::abs(machine[k] - position[a]) > 1e-9 ? machine[k] : position[a];
+    target[a] = std::abs(machine[k] - position[a]) > tolerance::length_mm ? machine[k] : position[a];
   }
   return target;
 }

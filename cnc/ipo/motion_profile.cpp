@@ -1,4 +1,5 @@
 #include "motion_profile.hpp"
+#include "tolerances.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +54,7 @@ MotionProfile::MotionProfile(MotionState start, const PhaseList& phases) : phase
   state.j = 0;
   end_ = state;
   duration_ = time;
-  moving_at_end_ = std::abs(end_.v) > 1e-9 * v_scale;
+  moving_at_end_ = std::abs(end_.v) > tolerance::limit_share * v_scale;
 }
 
 MotionState MotionProfile::at(double t) const {

@@ -7,6 +7,7 @@
 #include "bisect.hpp"
 #include "rest_to_rest.hpp"
 #include "velocity_profile.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -83,7 +84,9 @@ class Planner {
   // be reached" arrived a rounding faster, which the next short block could
   // no longer absorb: it arrived 1.9 mm/s fast at the program end (KRN-3).
   // 1 pm beyond the end is a setpoint jump of at most that much.
-  double overshoot_tolerance() const { return 1e-12 * (1 + std::abs(start_.p) + std::abs(target_)); }
+  double overshoot_tolerance() const {
+    return tolerance::same_point_share * (1 + std::abs(start_.p) + std::abs(target_));
+  }
 
   static PhaseList phases_of(const VelocityChange& change) {
     PhaseList phases;

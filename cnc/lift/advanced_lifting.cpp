@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "position_profile.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 
@@ -17,8 +18,8 @@ const MotionState& AdvancedLifting::step(double earliest_end_s) {
     if (landing + cycle_s_ <= earliest_end_s) {
       state_ = next;
       // On POS at rest as its summit (POS at or beyond POS_LIMIT): landed.
-      if (peak_ == pos_ && std::abs(state_.p - pos_) <= 1e-12 * (1 + std::abs(pos_)) && std::abs(state_.v) <= 1e-9 &&
-          std::abs(state_.a) <= 1e-6)
+      if (peak_ == pos_ && std::abs(state_.p - pos_) <= tolerance::same_point_share * (1 + std::abs(pos_)) &&
+          std::abs(state_.v) <= tolerance::velocity_mm_s && std::abs(state_.a) <= tolerance::acceleration_mm_s2)
         land_now();
       return state_;
     }

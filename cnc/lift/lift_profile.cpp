@@ -5,6 +5,7 @@
 
 #include "position_profile.hpp"
 #include "profile_check.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -29,7 +30,7 @@ LiftProfile LiftProfile::plan(double z0, double pos, double peak, double duratio
   } else if (time_over(direct) < duration) {
     // The time over a summit grows with its height: bisect it.
     double ok = direct, too_high = peak;
-    for (int i = 0; i < 100 && std::abs(too_high - ok) > 1e-12 * (1 + std::abs(ok)); ++i) {
+    for (int i = 0; i < 100 && std::abs(too_high - ok) > tolerance::bisection_share * (1 + std::abs(ok)); ++i) {
       const double mid = 0.5 * (ok + too_high);
       (time_over(mid) <= duration ? ok : too_high) = mid;
     }

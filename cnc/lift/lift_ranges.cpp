@@ -6,13 +6,14 @@
 
 #include "lift_limits.hpp"
 #include "path_segment.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 // A range with less path than this has none: the lift axis positions alone.
-constexpr double no_path_mm = 1e-6;
+constexpr double no_path_mm = tolerance::no_length_mm;
 
 double overload_factor(const AxisConfig& axis) { return axis.dyn_monitoring_a_err / 1000.0; }
 

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "motion_parts.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -15,7 +16,7 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 const double cos_sharpest = std::cos(170.0 * M_PI / 180.0);
 // Shorter corner distances are not worth a curve (and a shorter rest of
 // a block is no piece: an arc of it could not be told from a full circle).
-constexpr double shortest_mm = 1e-6;
+constexpr double shortest_mm = tolerance::no_length_mm;
 // Share of a block between two curves that is absorbed into them.
 constexpr double absorbed_share = 1e-3;
 // Largest value of the quintic Hermite basis functions of the end second
@@ -40,11 +41,11 @@ double norm(const std::vector<double>& v) { return std::sqrt(dot(v, v)); }
 bool needs_curve(const PathSegment& a, const PathSegment& b) {
   const std::vector<double> t1 = a.tangent(a.length()), t2 = b.tangent(0);
   for (size_t i = 0; i < t1.size(); ++i)
-    if (std::abs(t2[i] - t1[i]) > 1e-12) return true;
+    if (std::abs(t2[i] - t1[i]) > tolerance::direction) return true;
   const std::vector<double> k1 = a.curvature(a.length()), k2 = b.curvature(0);
   const double kappa = std::max(norm(k1), norm(k2));
   for (size_t i = 0; i < k1.size(); ++i)
-    if (std::abs(k2[i] - k1[i]) > 1e-9 * kappa) return true;
+    if (std::abs(k2[i] - k1[i]) > tolerance::curvature_share * kappa) return true;
   return false;
 }
 
@@ -60,7 +61,7 @@ double kappa_cap(const Corner& corner, double chord) {
 double ContourBuilder::dev_distance(double path_dev, const std::vector<double>& t1, const std::vector<double>& t2) {
   const double cos_theta = std::clamp(dot(t1, t2), -1.0, 1.0);
   const double c = std::sqrt((1 + cos_theta) / 2), s = std::sqrt((1 - cos_theta) / 2);
-  if (!(s > 1e-12)) return inf;
+  if (!(s > tolerance::direction)) return inf;
   return (path_dev / 2) * 16 / ((16 - 10 * c) * s);
 }
 

@@ -1,4 +1,5 @@
 #include "contour_curve.hpp"
+#include "tolerances.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -98,7 +99,7 @@ double ContourCurve::u_at(double s) const {
 namespace {
 // Path positions this close to an end are the end: its exact values.
 bool at_start(double s) { return s <= 0; }
-bool at_end(double s, double length) { return s >= length * (1 - 1e-12); }
+bool at_end(double s, double length) { return s >= length * (1 - tolerance::same_point_share); }
 }  // namespace
 
 std::vector<double> ContourCurve::position(double s) const {

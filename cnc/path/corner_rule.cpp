@@ -4,14 +4,15 @@
 #include <cmath>
 
 #include "bisect.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
 // Unit tangents from a decoder's lines differ by this much when collinear.
-constexpr double tangent_round_off = 1e-12;
+constexpr double tangent_round_off = tolerance::direction;
 // Curvatures of the same circle, or of a contouring curve's end and the
 // path it joins, differ by round-off relative to their size.
-constexpr double curvature_round_off = 1e-9;
+constexpr double curvature_round_off = tolerance::curvature_share;
 
 // Whether the tangents agree where `before` meets `after`. On the stack for
 // up to 16 axes: the corner rule runs at every block transition, and most

@@ -6,6 +6,7 @@
 #include "bisect.hpp"
 #include "corner_rule.hpp"
 #include "velocity_profile.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 
@@ -119,15 +120,15 @@ Stretch LookAhead::stretch(double v_now, size_t pass_through) const {
     // path must pass with a = 0).
     const bool passable = i + 1 < blocks_.size() && blocks_[i + 1].slope == st.slope &&
                           blocks_[i].junction_limit >= v_now && blocks_[i].jerk_share == 1 &&
-                          blocks_[i + 1].jerk_share == 1 && cruise_limits(i + 1).a >= (1 - 1e-9) * lim.a &&
-                          cruise_limits(i + 1).j >= (1 - 1e-9) * lim.j;
+                          blocks_[i + 1].jerk_share == 1 && cruise_limits(i + 1).a >= (1 - tolerance::limit_share) * lim.a &&
+                          cruise_limits(i + 1).j >= (1 - tolerance::limit_share) * lim.j;
     if (blocks_[i].limiting && passed < pass_through && passable) {
       ++passed;
       st.lim.v = std::min({st.lim.v, blocks_[i].junction_limit, cruise_limits(i + 1).v});
       continue;
     }
     if (blocks_[i].limiting) break;
-    if (blocks_[i].junction_limit < v_now * (1 - 1e-9)) {  // not a rounding above it (cruising at v_max)
+    if (blocks_[i].junction_limit < v_now * (1 - tolerance::limit_share)) {  // not a rounding above it (cruising at v_max)
       st.v_end = std::min(st.v_end, entry_velocity_after(i));
       break;
     }
@@ -175,7 +176,7 @@ void LookAhead::backward_pass(size_t last, bool until_unchanged) {
     // such a transition limiting once an override above 100 % lifted the
     // cruise velocity to the axes' limit: the path, braking through it for
     // the program end, had to reach it with a = 0 and could not, KRN-3.)
-    constexpr double same = 1 - 1e-9;
+    constexpr double same = 1 - tolerance::limit_share;
     b.limiting = cap < same * std::max(cruise, next_lim.v) || b.slope != next.slope || next_lim.a < same * own.a ||
                  next_lim.j < same * own.j;
     if (!b.limiting) {

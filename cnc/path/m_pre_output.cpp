@@ -5,14 +5,13 @@
 
 #include "motion_parts.hpp"
 #include "path_segment.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
 
 constexpr int pre_output_lookahead_blocks = 10;  // P-CHAN-00603 default
-// No part shorter than this (10 nm) is split off: a shorter arc could not be
-// told from a full circle.
-constexpr double shortest_part_mm = 1e-5;
+using tolerance::shortest_part_mm;
 
 // Puts `m` `distance` mm before the end of `out`'s path: between two parts
 // of the motion block there, or before the earliest block searched.

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "path_segment.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -14,9 +15,9 @@ double distance(const std::vector<double>& a, const std::vector<double>& b) {
   return std::sqrt(sum);
 }
 
-constexpr double on_motion_mm = 1e-6;
-constexpr double shortest_part_mm = 1e-5;
-constexpr double nothing_left_mm = 1e-9;
+constexpr double on_motion_mm = tolerance::no_length_mm;
+using tolerance::shortest_part_mm;
+constexpr double nothing_left_mm = tolerance::length_mm;
 
 // How far along the motion the point lies from its start; none if it is off it.
 std::optional<double> along(const Motion& motion, const PathSegment& whole, const std::vector<double>& point,

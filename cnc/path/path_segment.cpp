@@ -1,4 +1,5 @@
 #include "path_segment.hpp"
+#include "tolerances.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -147,7 +148,7 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
   const double angle_end = std::atan2(m.end[iy_] - cy_, m.end[ix_] - cx_);
   double sweep = direction_ * (angle_end - angle0_);  // > 0 along the direction
   sweep = std::fmod(sweep + 2 * two_pi, two_pi);
-  if (sweep < 1e-9) sweep = two_pi;  // end = start: full circle
+  if (sweep < tolerance::length_mm) sweep = two_pi;  // end = start: full circle
   sweep_ = sweep;
   // The decoder accepts an end radius a little off the start radius; the
   // radius is blended along the arc (a spiral). On a short arc the radial

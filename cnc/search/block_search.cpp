@@ -7,6 +7,7 @@
 #include "block_places.hpp"
 #include "collected_commands.hpp"
 #include "path_segment.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 // A distance read where a block begins may lie a round-off below the
 // search's own sum there (the run adds the same lengths in another order):
 // that is the block's start, no position already skipped.
-constexpr double round_off_mm = 1e-9;
+constexpr double round_off_mm = tolerance::length_mm;
 
 std::string mm_text(double value) {
   std::ostringstream text;

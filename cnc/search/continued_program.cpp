@@ -5,12 +5,13 @@
 
 #include "block_search.hpp"
 #include "motion_parts.hpp"
+#include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
 
 // A leg shorter than this does not move.
-constexpr double no_travel_mm = 1e-9;
+constexpr double no_travel_mm = tolerance::length_mm;
 
 bool moves(const std::vector<double>& from, const std::vector<double>& to) {
   for (size_t i = 0; i < from.size(); ++i)

@@ -156,7 +156,7 @@ TEST_CASE("KRN-5 KRN-3 a turn right after the path entered a block moves the res
           "[channel][backward]") {
   // Seed 2415: backward motion requested as the path crept into a SIN2
   // block after a corner; it stood 1.1 nm into it, and reverse_direction()
-  // does not move a rest under 10 nm (shortest_rest_mm): the setpoint
+  // does not move a rest under 10 nm (tolerance::shortest_part_mm): the setpoint
   // jumped the 1.1 nm back onto the corner in one cycle (41,124 mm/s^3 on
   // X there, with the braking's own jerk), and dist_prog_start did not
   // count it back. Here: 4.4 nm dropped. Now such a rest is a straight line
