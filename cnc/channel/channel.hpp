@@ -66,6 +66,9 @@ class Channel : private PathObserver {
   std::vector<Event> take_events() { return events_.take(); }
   // The blocks it holds now (issue 17: bounded, whatever the program's length).
   size_t blocks_held() const { return path_->blocks().held() + (program_ ? program_->blocks_held() : 0); }
+  // What does not hold of the interpolator's state ("" if all does): the
+  // channel fuzz asks every cycle.
+  std::string check_invariants() const { return path_ ? path_->check_invariants() : ""; }
   // Program end or error reached: the channel commands no more motion.
   bool finished() const;
 

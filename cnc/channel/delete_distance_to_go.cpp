@@ -63,10 +63,9 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::forward_short_cut(PathInterpolat
   // What lies between the stop and the target (non-motion blocks) runs at
   // the stop position, before the short cut (DDTG-7).
   const BlockWindow& blocks = path.blocks();
-  BlockCursors& cursors = path.cursors();
   const uint32_t mask = activation_;
   const ShortCutTarget found = short_cut_target(blocks, stop.block, mask);
-  cursors.next_to_run = std::max(cursors.next_to_run, stop.block + 1);  // after backward motion: ran already
+  path.mark_run_through(stop.block);
   const std::string here = "delete distance to go in line " + std::to_string(events.nc_line());
   if (found.not_skippable) {  // DDTG-8: the path stays where it stopped
     const Block& command = blocks[*found.not_skippable];
@@ -76,8 +75,7 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::forward_short_cut(PathInterpolat
     refused.nc_line = command.nc_line;
     refused.block_nr = command.block_nr;
     events.raise(refused);
-    path.close_program();
-    cursors.next_to_look_ahead = cursors.next_to_run = past_program_end;
+    path.abort_program();
     return Outcome::aborted;
   }
   if (found.channel_initialisation) {  // DDTG-8: the short cut ends before it
@@ -102,10 +100,10 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::forward_short_cut(PathInterpolat
                                            "; motion ends at the stop position");
     none.id = 50810;
     events.raise(none);
-    cursors.next_to_look_ahead = past_program_end;
+    path.end_motion_here();
     return Outcome::no_target;
   }
-  cursors.next_to_look_ahead = *found.target + 1;
+  path.look_ahead_after(*found.target);
   push(path, stop, *found.target, blocks[*found.target].motion.end, rapid);
   return Outcome::short_cut;
 }
@@ -115,9 +113,8 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::forward_short_cut(PathInterpolat
 DeleteDistanceToGo::Outcome DeleteDistanceToGo::backward_short_cut(PathInterpolator& path, const StopPoint& stop,
                                                                    bool rapid, ChannelEvents& events) {
   const BlockWindow& blocks = path.blocks();
-  BlockCursors& cursors = path.cursors();
   size_t target = stop.block;
-  while (target > cursors.lowest_stored && !blocks[--target].has_motion) {
+  while (target > path.lowest_stored_block() && !blocks[--target].has_motion) {
   }
   if (target == stop.block || !blocks[target].has_motion) {  // DDTG-6: nothing stored before it
     Event none = events.at_block(Severity::warning,
@@ -125,11 +122,10 @@ DeleteDistanceToGo::Outcome DeleteDistanceToGo::backward_short_cut(PathInterpola
                                  "motion ends at the stop position");
     none.id = 50810;
     events.raise(none);
-    cursors.next_backward = cursors.lowest_stored;
-    cursors.last_finished = stop.block;  // it stands inside this block: forward again goes on from here
+    path.stand_in_block(stop.block);
     return Outcome::no_target;
   }
-  cursors.next_backward = target;
+  path.look_back_below(target);
   push(path, stop, target, blocks[target].motion.start, rapid);
   return Outcome::short_cut;
 }

@@ -80,12 +80,13 @@ bool InsertStop::set_pending(PathInterpolator& path, double t, double distance_m
                                                           " names no axis of the channel; the command is ignored"));
       return false;
     }
-    const double now = path.setpoints()[c.axis_nr - 1].position;
+    const size_t axis = static_cast<size_t>(c.axis_nr - 1);
+    const double now = path.setpoints()[axis].position;
     mark.iterative = c.rel_abs_mode == 0;
     // KRN-7: absolute on a modulo axis is shifted into its range (the next
     // time it gets there: at most a revolution); relative counts the
     // axis' travel (several revolutions if asked).
-    mark.axis_target = c.rel_abs_mode == 1 ? machine_.axes[c.axis_nr - 1].in_modulo_range(d) : now + d;
+    mark.axis_target = c.rel_abs_mode == 1 ? machine_.axes[axis].in_modulo_range(d) : now + d;
     set_position_mark(path, t, mark, events);
     return true;
   }
@@ -133,7 +134,7 @@ bool InsertStop::leave(PathInterpolator& path, double t, double distance_mm) {
   const double d = next.command.dist_or_pos * mm_per_hli;
   next.base_mm = distance_mm;
   if (next.command.axis_nr > 0) {
-    next.axis_target = path.setpoints()[next.command.axis_nr - 1].position + d;
+    next.axis_target = path.setpoints()[static_cast<size_t>(next.command.axis_nr - 1)].position + d;
     ChannelEvents quiet;
     set_position_mark(path, t, next, quiet);
   } else {

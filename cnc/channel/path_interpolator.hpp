@@ -94,7 +94,27 @@ class PathInterpolator {
   const BlockWindow& blocks() const { return blocks_; }
   // Nothing more is read from the program: it ends after the blocks read.
   void close_program() { blocks_.close(); }
-  BlockCursors& cursors() { return cursors_; }
+  // What a short cut (delete distance to go, DDTG-6 .. DDTG-10) does to
+  // where the interpolator is in the program; the cursors stay its own.
+  // The commands of `block` and before have run (forward after backward
+  // motion: they ran already).
+  void mark_run_through(size_t block);
+  // DDTG-8: nothing more of the program: neither motion nor commands.
+  void abort_program();
+  // DDTG-6: no motion block more forward; the commands still run.
+  void end_motion_here();
+  // Forward: the look-ahead goes on after `block` (a short cut's target).
+  void look_ahead_after(size_t block);
+  // Backward: the blocks below `block` enter the look-ahead next.
+  void look_back_below(size_t block);
+  // DDTG-6 backward: nothing more to run back to; the path stands in
+  // `block`, forward again goes on from there.
+  void stand_in_block(size_t block);
+  // The first block still stored for backward motion (P-STUP-00033).
+  size_t lowest_stored_block() const { return cursors_.lowest_stored; }
+  // What does not hold of the cursors' meaning ("" if all does; the
+  // channel fuzz asks every cycle).
+  std::string check_invariants() const;
   TravelDirection direction() const { return direction_; }
   double direction_sign() const { return direction_ == TravelDirection::backward ? -1.0 : 1.0; }
 

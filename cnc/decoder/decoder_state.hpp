@@ -63,14 +63,15 @@ struct DecoderState {
     for (size_t a = 0; a < machine.axes.size(); ++a)
       if (machine.axes[a].name.size() == 1) {
         const char c = machine.axes[a].name[0];
-        if (c >= 'A' && c <= 'Z' && axis_by_letter[c - 'A'] < 0) axis_by_letter[c - 'A'] = static_cast<int>(a);
+        if (c >= 'A' && c <= 'Z' && letter_axis(c) < 0) axis_by_letter[static_cast<size_t>(c - 'A')] = static_cast<int>(a);
       }
   }
 
   // The machine axis an address letter (upper case) names, -1 if none: a
   // table, as every axis word asks it.
+  int letter_axis(char upper) const { return axis_by_letter[static_cast<size_t>(upper - 'A')]; }
   int axis_of_letter(char letter) const {
-    if (letter >= 'A' && letter <= 'Z') return axis_by_letter[letter - 'A'];
+    if (letter >= 'A' && letter <= 'Z') return letter_axis(letter);
     return machine.axis_index(std::string(1, letter));
   }
 
@@ -102,8 +103,8 @@ struct DecoderState {
   void update_offset() {
     for (size_t a = 0; a < offset.size(); ++a)
       offset[a] = reference_point_offset[a] +
-                  (zero_offset > 0 && a < zero_offset_tables[zero_offset - 1].size()
-                       ? zero_offset_tables[zero_offset - 1][a]
+                  (zero_offset > 0 && a < zero_offset_tables[static_cast<size_t>(zero_offset - 1)].size()
+                       ? zero_offset_tables[static_cast<size_t>(zero_offset - 1)][a]
                        : 0.0);
   }
 

@@ -184,7 +184,7 @@ void apply_word(const Word& w, bool first, DecoderState& state, BlockWords& prog
         programmed.dwell_s = w.value;
         break;
       }
-      const int axis = axis_of(w, state);
+      const size_t axis = static_cast<size_t>(axis_of(w, state));  // axis_of throws for none
       if (programmed.axes[axis]) throw LineError{std::string("axis ") + w.letter + " programmed twice"};
       const double scale = state.machine.axes[axis].rotary() ? 1.0 : unit;
       programmed.axes[axis] = checked_length(w.value * scale, std::string_view(&w.letter, 1));
@@ -382,8 +382,9 @@ void assign_parameter(std::string_view code, size_t equals, DecoderState& state)
     state.parameters[static_cast<int>(*target.parameter)] = value;
   } else if (target.zero_offset) {
     // G54..G59's table entry (mm, inch under G70): from this line on.
-    const double unit = state.modal.inch && !state.machine.axes[target.axis].rotary() ? mm_per_inch : 1.0;
-    state.zero_offset_tables[*target.zero_offset - 1][target.axis] = checked_length(value * unit, "zero offset");
+    const size_t axis = static_cast<size_t>(target.axis), table = static_cast<size_t>(*target.zero_offset - 1);
+    const double unit = state.modal.inch && !state.machine.axes[axis].rotary() ? mm_per_inch : 1.0;
+    state.zero_offset_tables[table][axis] = checked_length(value * unit, "zero offset");
     state.update_offset();
   } else {
     if (value < 0) throw LineError{"PRE_OUTP_PATH must be >= 0 mm"};

@@ -14,6 +14,8 @@ namespace hil::cnc::decoding {
 namespace {
 
 int main_axis(const DecoderState& state, int k) { return state.machine.axis_index(std::string(1, "XYZ"[k])); }
+// An index known to be one (>= 0).
+size_t at(int i) { return static_cast<size_t>(i); }
 
 // The main axes of a machine position in program coordinates (zero
 // offsets, G92, the active #CS), and back; a main axis the machine lacks
@@ -21,19 +23,19 @@ int main_axis(const DecoderState& state, int k) { return state.machine.axis_inde
 Eigen::Vector3d to_program(const DecoderState& state, const AxisValues& machine) {
   Eigen::Vector3d workpiece = Eigen::Vector3d::Zero();
   for (int k = 0; k < 3; ++k)
-    if (const int a = main_axis(state, k); a >= 0) workpiece[k] = machine[a] - state.offset[a];
+    if (const int a = main_axis(state, k); a >= 0) workpiece[k] = machine[at(a)] - state.offset[at(a)];
   return state.cs ? state.cs->to_program(workpiece) : workpiece;
 }
 Eigen::Vector3d to_machine(const DecoderState& state, const Eigen::Vector3d& program) {
   Eigen::Vector3d machine = state.cs ? state.cs->to_workpiece(program) : program;
   for (int k = 0; k < 3; ++k)
-    if (const int a = main_axis(state, k); a >= 0) machine[k] += state.offset[a];
+    if (const int a = main_axis(state, k); a >= 0) machine[k] += state.offset[at(a)];
   return machine;
 }
 
 // G165: the nearest centre on the perpendicular bisector of start and end.
 void correct_centre(Motion& m) {
-  const int x = m.plane[0], y = m.plane[1];
+  const size_t x = at(m.plane[0]), y = at(m.plane[1]);
   const double chord_x = m.end[x] - m.start[x], chord_y = m.end[y] - m.start[y];
   const double chord = std::hypot(chord_x, chord_y);
   if (!(chord > tolerance::length_mm)) return;  // a full circle (end = start) has no bisector
@@ -45,7 +47,7 @@ void correct_centre(Motion& m) {
 }
 
 void check_on_circle(const Motion& m, const DecoderState& state) {
-  const int x = m.plane[0], y = m.plane[1];
+  const size_t x = at(m.plane[0]), y = at(m.plane[1]);
   const double r_start = std::hypot(m.start[x] - m.center[0], m.start[y] - m.center[1]);
   const double r_end = std::hypot(m.end[x] - m.center[0], m.end[y] - m.center[1]);
   if (r_start < tolerance::no_length_mm) throw LineError{"arc radius is zero"};
@@ -127,10 +129,10 @@ AxisValues programmed_target(const std::vector<std::optional<double>>& axis_word
   // In a #CS one main axis word can move all three main axes.
   Eigen::Vector3d point = to_program(state, position);
   for (int k = 0; k < 3; ++k)
-    if (axis_words[main_axis(state, k)]) point[k] = programmed(point[k], *axis_words[main_axis(state, k)]);
+    if (const auto& word = axis_words[at(main_axis(state, k))]) point[k] = programmed(point[k], *word);  // #CS: X Y Z exist
   const Eigen::Vector3d machine = to_machine(state, point);
   for (int k = 0; k < 3; ++k) {
-    const int a = main_axis(state, k);
+    const size_t a = at(main_axis(state, k));
     target[a] = std::abs(machine[k] - position[a]) > tolerance::length_mm ? machine[k] : position[a];
   }
   return target;
@@ -145,10 +147,10 @@ void set_arc_centre(Motion& m, const ArcWords& words, const DecoderState& state)
                     "XYZ"[axes.second]};
   m.plane = {first, second};
   const std::array<std::optional<double>, 3> centre_words{words.i, words.j, words.k};
-  if (centre_words[axes.normal])
+  if (centre_words[at(axes.normal)])
     throw LineError{std::string("'") + "IJK"[axes.normal] + "' is no centre word in " + plane_name(plane) +
                     ": its arcs take " + "IJK"[axes.first] + " and " + "IJK"[axes.second]};
-  const bool has_centre = centre_words[axes.first] || centre_words[axes.second];
+  const bool has_centre = centre_words[at(axes.first)] || centre_words[at(axes.second)];
   if (words.r && has_centre) throw LineError{"an arc takes its centre (I J K) or its radius R, not both"};
   if (!words.r && !has_centre)
     throw LineError{std::string("G02/G03 need the centre ") + "IJK"[axes.first] + " " + "IJK"[axes.second] +
@@ -167,9 +169,10 @@ void set_arc_centre(Motion& m, const ArcWords& words, const DecoderState& state)
     centre[axes.second] = c.y();
   } else {
     for (const int k : {axes.first, axes.second}) {
-      if (!centre_words[k]) continue;
+      const std::optional<double>& word = centre_words[at(k)];
+      if (!word) continue;
       // G161: the centre in program coordinates; G162: seen from the start.
-      centre[k] = state.modal.centre_absolute ? *centre_words[k] : start[k] + *centre_words[k];
+      centre[k] = state.modal.centre_absolute ? *word : start[k] + *word;
     }
   }
   const Eigen::Vector3d machine = to_machine(state, centre);

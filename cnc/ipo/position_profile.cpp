@@ -123,10 +123,10 @@ class Planner {
       const double t_switch = find_switch_reference(miss, miss_driven);
       double left = t_switch;  // counted down: a sum of durations would drift past it
       for (int i = 0; i < drive_.count() && left > 0; ++i) {
-        Phase ph = drive_.phases[i];
+        Phase ph = drive_.phase(i);
         if (ph.duration > left) {
           ph.duration = left;
-          ph.a_end = advance(s, drive_.phases[i], left).a;
+          ph.a_end = advance(s, drive_.phase(i), left).a;
         }
         phases.push_back(ph);
         s = advance(s, ph, ph.duration);
@@ -135,11 +135,11 @@ class Planner {
     } else {
       const Switch at = find_switch(miss, miss_driven);
       for (int i = 0; i < at.phase; ++i) {
-        phases.push_back(drive_.phases[i]);
-        s = advance(s, drive_.phases[i], drive_.phases[i].duration);
+        phases.push_back(drive_.phase(i));
+        s = advance(s, drive_.phase(i), drive_.phase(i).duration);
       }
       if (at.tau > 0) {
-        Phase ph = drive_.phases[at.phase];
+        Phase ph = drive_.phase(at.phase);
         if (ph.duration > at.tau) {
           ph.a_end = advance(s, ph, at.tau).a;
           ph.duration = at.tau;
@@ -205,7 +205,7 @@ class Planner {
     MotionState s = start_;
     double f_lo = f0, f_hi = f1;
     for (int i = 0; i + 1 < drive_.count(); ++i) {
-      const Phase& ph = drive_.phases[i];
+      const Phase& ph = drive_.phase(i);
       const MotionState e = advance(s, ph, ph.duration);
       if (ph.duration > 0) {
         const double f = overshoot(e);
@@ -219,7 +219,7 @@ class Planner {
       }
       s = e;
     }
-    const Phase& ph = drive_.phases[phase];
+    const Phase& ph = drive_.phase(phase);
     double lo = 0, hi = ph.duration;
     double g_lo = f_lo, g_hi = f_hi;  // f_lo, f_hi scaled down where a side was kept
     double width_before = hi - lo;
@@ -258,9 +258,9 @@ class Planner {
   MotionState driven_for(double t) const {
     MotionState s = start_;
     for (int i = 0; i < drive_.count(); ++i) {
-      const double d = drive_.phases[i].duration;
-      if (t <= d) return advance(s, drive_.phases[i], t);
-      s = advance(s, drive_.phases[i], d);
+      const double d = drive_.phase(i).duration;
+      if (t <= d) return advance(s, drive_.phase(i), t);
+      s = advance(s, drive_.phase(i), d);
       t -= d;
     }
     return s;

@@ -12,6 +12,7 @@ namespace hil::cnc {
 struct VelocityChange {
   InlineList<Phase, 4> phases;
   int count() const { return static_cast<int>(phases.size()); }
+  const Phase& phase(int i) const { return phases[static_cast<size_t>(i)]; }
   double duration() const;
   // State at the end, begun in `s`.
   MotionState end(const MotionState& s) const;

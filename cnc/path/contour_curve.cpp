@@ -46,7 +46,7 @@ ContourCurve::ContourCurve(const End& start, const End& end) : start_(start), en
     c[5] = p5 - 5 * p4 + 10 * p3 - 10 * p2 + 5 * p1 - p0;
   }
   table_s_.resize(intervals + 1, 0.0);
-  for (int k = 0; k < intervals; ++k)
+  for (size_t k = 0; k < static_cast<size_t>(intervals); ++k)
     table_s_[k + 1] = table_s_[k] + s_between(double(k) / intervals, double(k + 1) / intervals);
 }
 
@@ -58,7 +58,7 @@ std::vector<double> ContourCurve::derivative(double u, int n) const {
     for (int p = 5; p >= n; --p) {
       double factor = 1;
       for (int q = 0; q < n; ++q) factor *= p - q;
-      sum = sum * u + factor * c[p];
+      sum = sum * u + factor * c[static_cast<size_t>(p)];
     }
     d[i] = sum;
   }

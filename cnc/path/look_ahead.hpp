@@ -17,11 +17,11 @@ namespace hil::cnc {
 
 struct LookAheadBlock {
   // Made in its place in the look-ahead: a PathSegment is large to move.
-  LookAheadBlock(PathPiece&& piece, double jerk_share)
+  LookAheadBlock(PathPiece&& piece, double share)
       : block_index(piece.block_index),
         segment(std::move(piece.segment)),
         slope(piece.slope),
-        jerk_share(jerk_share),
+        jerk_share(share),
         begins_block(piece.begins_block),
         ends_block(piece.ends_block) {}
 

@@ -7,6 +7,10 @@
 
 namespace hil::cnc {
 namespace {
+
+// An arc's plane axis: set (>= 0) wherever it is used as an index.
+size_t at(int axis) { return static_cast<size_t>(axis); }
+
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double two_pi = 2 * M_PI;
 // X, Y or Z, without std::string's compare (every block asks, for every axis).
@@ -141,11 +145,11 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
   iy_ = m.plane[1] >= 0 ? m.plane[1] : machine.axis_index("Y");
   cx_ = m.center[0];
   cy_ = m.center[1];
-  radius_ = std::hypot(m.start[ix_] - cx_, m.start[iy_] - cy_);
-  radius_end_ = std::hypot(m.end[ix_] - cx_, m.end[iy_] - cy_);
-  angle0_ = std::atan2(m.start[iy_] - cy_, m.start[ix_] - cx_);
+  radius_ = std::hypot(m.start[at(ix_)] - cx_, m.start[at(iy_)] - cy_);
+  radius_end_ = std::hypot(m.end[at(ix_)] - cx_, m.end[at(iy_)] - cy_);
+  angle0_ = std::atan2(m.start[at(iy_)] - cy_, m.start[at(ix_)] - cx_);
   direction_ = m.type == MotionType::arc_ccw ? 1 : -1;
-  const double angle_end = std::atan2(m.end[iy_] - cy_, m.end[ix_] - cx_);
+  const double angle_end = std::atan2(m.end[at(iy_)] - cy_, m.end[at(ix_)] - cx_);
   double sweep = direction_ * (angle_end - angle0_);  // > 0 along the direction
   sweep = std::fmod(sweep + 2 * two_pi, two_pi);
   if (sweep < tolerance::length_mm) sweep = two_pi;  // end = start: full circle
@@ -163,8 +167,8 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
   length_ = std::sqrt(sum);
   planar_ = arc_length / length_;
 
-  const AxisConfig& x = machine.axes[ix_];
-  const AxisConfig& y = machine.axes[iy_];
+  const AxisConfig& x = machine.axes[at(ix_)];
+  const AxisConfig& y = machine.axes[at(iy_)];
   const double c = planar_;
   // |d2(x, y)/ds2| <= kappa and |d3(x, y)/ds3| <= kappa_rate, with the
   // radius' rate r' = dr / L and the angle's w = sweep / L (on a circle
@@ -198,8 +202,8 @@ std::vector<double> PathSegment::position(double s) const {
     // The decoder accepts end radii a little off the start radius: blend
     // them along the arc so the path ends exactly where it was programmed.
     const double angle = angle_at(s), r = radius_at(s);
-    p[ix_] = cx_ + r * std::cos(angle);
-    p[iy_] = cy_ + r * std::sin(angle);
+    p[at(ix_)] = cx_ + r * std::cos(angle);
+    p[at(iy_)] = cy_ + r * std::sin(angle);
   }
   return p;
 }
@@ -227,8 +231,8 @@ void PathSegment::tangent(double s, double* t) const {
     // r' u + r phi' n (u radial, n along the direction).
     const double angle = angle_at(s), radial = (radius_end_ - radius_) / length_;
     const double along = direction_ * radius_at(s) * sweep_ / length_;
-    t[ix_] = radial * std::cos(angle) - along * std::sin(angle);
-    t[iy_] = radial * std::sin(angle) + along * std::cos(angle);
+    t[at(ix_)] = radial * std::cos(angle) - along * std::sin(angle);
+    t[at(iy_)] = radial * std::sin(angle) + along * std::cos(angle);
   }
 }
 
@@ -239,8 +243,8 @@ std::vector<double> PathSegment::curvature(double s) const {
     // 2 r' phi' n - r phi'^2 u (r'' = phi'' = 0).
     const double angle = angle_at(s), w = sweep_ / length_;
     const double inward = radius_at(s) * w * w, turn = 2 * direction_ * (radius_end_ - radius_) / length_ * w;
-    k[ix_] = -inward * std::cos(angle) - turn * std::sin(angle);
-    k[iy_] = -inward * std::sin(angle) + turn * std::cos(angle);
+    k[at(ix_)] = -inward * std::cos(angle) - turn * std::sin(angle);
+    k[at(iy_)] = -inward * std::sin(angle) + turn * std::cos(angle);
   }
   return k;
 }

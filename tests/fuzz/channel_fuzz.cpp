@@ -286,6 +286,8 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     }
     check_events(k, search_failed, refused ? &*refused : nullptr);
     if (options.observer) options.observer(k, channel, control, step_events);
+    if (const std::string broken = channel.check_invariants(); !broken.empty())
+      fail({"invariant", k, "", "", 0, 0, line, "the interpolator's block cursors: " + broken});
     if (started) last_start_position = previous_position;
     if (s.reset.state_r) {
       ++resets;

@@ -10,6 +10,8 @@
 // turns calm (no feed hold, override >= 30 %, forward, prompt
 // acknowledgements) so that the program ends. Every cycle is checked:
 //
+//  - Channel::check_invariants(): the interpolator's block cursors keep
+//    their meaning (issue 35);
 //  - no exception leaves Channel::step (a crash or a hang is caught by
 //    run_channel_fuzz_isolated); setpoints and HLI values finite;
 //  - each axis' commanded velocity, acceleration and jerk, as finite
@@ -95,7 +97,7 @@ struct FuzzOptions {
 };
 
 struct Failure {
-  std::string invariant;  // "limit", "drive", "exception", "finite", "dist_prog_start", "end position", "event", "end"
+  std::string invariant;  // "limit", "drive", "exception", "finite", "dist_prog_start", "end position", "event", "end", "invariant"
   int64_t cycle = -1;
   std::string axis;
   std::string quantity;
