@@ -7,7 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "assignments.hpp"
 #include "g_functions.hpp"
+#include "technology_words.hpp"
 #include "lift_commands.hpp"
 #include "line_cursor.hpp"
 #include "motion_target.hpp"
@@ -33,10 +35,6 @@ struct BlockWords {
   std::optional<int> zero_offset;           // G53 (0), G54..G59 (1..6)
   std::vector<int> g_codes;                 // every G of the block, for G04's "alone"
 };
-
-// G70: inch. Lengths of the linear axes, I J K R and F (inch/min) scale;
-// rotary axes (A B C) keep degrees.
-constexpr double mm_per_inch = 25.4;
 
 // The letters TwinCAT names axes with ("Axis names": A B C U V W X Y Z Q):
 // one of them that is no axis here is "not an axis of this machine"; any
@@ -98,55 +96,6 @@ void apply_g_code(const Word& w, ModalState& modal, BlockWords& programmed) {
   } else {
     throw LineError{refused_g_function_message(g), 20131};
   }
-}
-
-// M03 / M04 / M05 switch the spindle (TF5200 "Spindle"): S goes out with
-// M03 / M04 or while the spindle turns; under M05 it is only kept.
-void add_m_function(const Word& w, DecoderState& state, Block& block) {
-  const int m = static_cast<int>(integer_code(w, max_m_function));
-  if (m == 30) {
-    block.program_end = true;
-    return;
-  }
-  if (m == 0 || m == 1) {  // M00 / M01: the channel's own stop (ISC-5), not output to the PLC
-    if (block.programmed_stop) throw LineError{"two of M00 / M01 in one block"};
-    block.programmed_stop = m;
-    return;
-  }
-  if (m == 3 || m == 4 || m == 5) {
-    const bool other = std::any_of(block.m_functions.begin(), block.m_functions.end(), [](const MFunction& f) {
-      return f.address == 'M' && (f.nr == 3 || f.nr == 4 || f.nr == 5);
-    });
-    if (other) throw LineError{"'" + w.text() + "': one of M03 / M04 / M05 in a block"};
-    const bool starts = m != 5 && !state.spindle_turning;
-    state.spindle_turning = m != 5;
-    // The speed kept under M05 goes out with the start, before the M function.
-    if (starts && state.spindle_speed &&
-        std::none_of(block.m_functions.begin(), block.m_functions.end(), [](const MFunction& f) { return f.address == 'S'; }))
-      block.m_functions.push_back({0, 0, 'S', *state.spindle_speed});
-  }
-  const auto pre_output = state.pre_output_mm.find(m);
-  block.m_functions.push_back({m, pre_output == state.pre_output_mm.end() ? 0.0 : pre_output->second});
-}
-
-// S<rpm>, T<tool>, D<offset>, H<nr>: technology functions for the PLC in
-// the block's order (KRN-8), before the block's motion (MVS_SVS).
-void add_technology_word(const Word& w, DecoderState& state, Block& block) {
-  if (w.letter == 'S') {
-    if (!(w.value >= 0 && w.value <= max_spindle_speed))
-      throw LineError{"'" + w.text() + "': the spindle speed S must be 0 .. " +
-                      std::to_string(static_cast<int64_t>(max_spindle_speed)) + " rpm"};
-    state.spindle_speed = w.value;
-    if (!state.spindle_turning) return;
-    // After an M03 / M04 of this block that sent the kept speed: this one instead.
-    const auto sent = std::find_if(block.m_functions.begin(), block.m_functions.end(),
-                                   [](const MFunction& f) { return f.address == 'S'; });
-    if (sent != block.m_functions.end()) sent->value = w.value;
-    else block.m_functions.push_back({0, 0, 'S', w.value});
-    return;
-  }
-  const int nr = static_cast<int>(integer_code(w, max_m_function));
-  block.m_functions.push_back({nr, 0, w.letter});
 }
 
 // F in mm/min, within [min_feed_mm_min, max_feed_mm_min].
@@ -319,77 +268,6 @@ void decode_command_block(std::string_view code, size_t hash, DecoderState& stat
   if (!n_only) throw LineError{"a '#' command must stand alone in its block (after the N number)"};
   if (!before.empty()) block.block_nr = integer_code(before[0], max_block_nr);
   decode_nc_command(upper_words(code.substr(hash)), state, block);
-}
-
-// What the left side of an assignment names: P<n>, the pre-output path of
-// M<m>, or axis `axis` of zero offset `zero_offset` (1..6: G54..G59).
-struct AssignmentTarget {
-  std::optional<int64_t> parameter, m_function, zero_offset;
-  int axis = -1;
-};
-
-// P<n>, V.G.M_FCT[<m>].PRE_OUTP_PATH or V.G.NP[<1..6>].V.<axis> after an
-// optional N number, and nothing else; a number out of range or an axis
-// the machine lacks is none.
-AssignmentTarget assignment_target(std::string_view left, const DecoderState& state) {
-  LineCursor cursor(left);
-  cursor.skip_block_nr();
-  AssignmentTarget target;
-  if (cursor.take_keyword("V.G.NP")) {  // V.G.NP[<n>].V.<axis> (TF5200 "Zero offsets")
-    if (!cursor.take('[')) return {};
-    cursor.skip_blanks();
-    const std::optional<int64_t> group = whole_number(cursor.take_digits(), 6);
-    if (!group || *group < 1 || !(cursor.take(']') && cursor.take('.') && cursor.take('V') && cursor.take('.'))) return {};
-    cursor.skip_blanks();
-    const std::string_view axis = cursor.rest();
-    const size_t end = axis.find_first_of(" \t");
-    const std::string name = upper_words(axis.substr(0, end));
-    target.axis = state.machine.axis_index(name);
-    if (target.axis < 0) return {};
-    LineCursor after(axis.substr(name.size()));
-    if (!after.at_end()) return {};
-    target.zero_offset = group;
-    return target;
-  }
-  if (cursor.take_keyword("V.G.M_FCT")) {
-    if (!cursor.take('[')) return {};
-    cursor.skip_blanks();
-    target.m_function = whole_number(cursor.take_digits(), max_m_function);
-    if (!cursor.take_keyword("].PRE_OUTP_PATH")) return {};
-  } else if (cursor.take('P')) {
-    target.parameter = whole_number(cursor.take_digits(), max_p_parameter);
-  }
-  if (!cursor.at_end()) return {};
-  return target;
-}
-
-// P<n> = <expression> (a decoder variable),
-// V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm> (P-CHAN-00070 for M<m> from here
-// on) or V.G.NP[<1..6>].V.<axis> = <mm> (G54..G59's entry, KRN-8), after
-// an optional N number. Decoder work: no block.
-void assign_parameter(std::string_view code, size_t equals, DecoderState& state) {
-  const AssignmentTarget target = assignment_target(code.substr(0, equals), state);
-  if (!target.parameter && !target.m_function && !target.zero_offset)
-    throw LineError{"'=' is only allowed in P<n> = <expression> (n 0.." + std::to_string(max_p_parameter) +
-                    "), V.G.M_FCT[<m>].PRE_OUTP_PATH = <mm> and V.G.NP[<1..6>].V.<axis> = <mm>"};
-  double value = 0;
-  try {
-    value = state.evaluate(std::string(code.substr(equals + 1)));
-  } catch (const std::invalid_argument& e) {
-    throw LineError{e.what()};
-  }
-  if (target.parameter) {
-    state.parameters[static_cast<int>(*target.parameter)] = value;
-  } else if (target.zero_offset) {
-    // G54..G59's table entry (mm, inch under G70): from this line on.
-    const size_t axis = static_cast<size_t>(target.axis), table = static_cast<size_t>(*target.zero_offset - 1);
-    const double unit = state.modal.inch && !state.machine.axes[axis].rotary() ? mm_per_inch : 1.0;
-    state.zero_offset_tables[table][axis] = checked_length(value * unit, "zero offset");
-    state.update_offset();
-  } else {
-    if (value < 0) throw LineError{"PRE_OUTP_PATH must be >= 0 mm"};
-    state.pre_output_mm[static_cast<int>(*target.m_function)] = checked_length(value, "PRE_OUTP_PATH");
-  }
 }
 
 // Block skip (TF5200 "Skipping of NC blocks"): /1 .. /10 at the start of a

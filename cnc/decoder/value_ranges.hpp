@@ -17,6 +17,9 @@ namespace hil::cnc::decoding {
 
 // Coordinates (axis words, G92 values, end points after G91, G92 and #CS),
 // arc centres and radii, I/J, #CS offsets, PRE_OUTP_PATH: |value| <= 1 km.
+// G70: inch. Lengths of the linear axes, I J K R and F (inch/min) scale;
+// rotary axes (A B C) keep degrees.
+constexpr double mm_per_inch = 25.4;
 constexpr double max_length_mm = 1e6;
 constexpr double min_feed_mm_min = 1e-3;  // F
 constexpr double max_feed_mm_min = 1e7;
