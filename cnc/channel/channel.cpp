@@ -132,7 +132,7 @@ void Channel::begin_program_run() {
   continuation_reached_ = false;
   decode_failed_ = false;
   backward_refused_ = false;
-  hli_.channel_state = ChannelState::ready;
+  enter(ChannelState::ready);
   hli_.block_search.state_r = BlockSearchState();
   hli_.dist_prog_start = 0;
   hli_.path_velocity = 0;
@@ -159,7 +159,7 @@ void Channel::start_program(const ControlUnitBlockSearch& search) {
   path_->load(program_->blocks(), backward_.stored_blocks());
   backward_refused_ = false;
   start_cycle_ = cycle_;
-  hli_.channel_state = ChannelState::active;
+  enter(ChannelState::active);
   if (insert_->pending()) insert_->set_pending(*path_, 0, distance_mm(), events_);  // commanded before the start (ISC-6)
   path_->go_on_from_standstill(0);
   update_hold();
@@ -255,7 +255,7 @@ void Channel::interpolate(double t) {
   if (lift_->take_missed_landing()) {
     events_.raise(events_.at_block(Severity::error, "lift function: the path left the lift range before the lift "
                                                     "axis had landed on POS"));
-    hli_.channel_state = ChannelState::error;
+    enter(ChannelState::error);
   }
   hli_.dist_prog_start = distance_.value_mm(path_->front_covered()) * hli_units_per_mm;
   hli_.path_velocity = path_->path_velocity();
@@ -267,12 +267,12 @@ void Channel::interpolate(double t) {
     e.nc_line = block.nc_line;
     e.block_nr = block.block_nr;
     events_.raise(e);
-    hli_.channel_state = ChannelState::error;
+    enter(ChannelState::error);
   }
   if (progress == PathProgress::setpoint_not_finite) {
     events_.raise(events_.at_block(Severity::error, "the interpolator computed a setpoint that is not a finite number; "
                                                     "the axes hold the last valid setpoint; program aborted"));
-    hli_.channel_state = ChannelState::error;
+    enter(ChannelState::error);
   }
   if (progress == PathProgress::reached_contour_start)
     events_.raise(events_.at_block(Severity::warning, "backward motion reached the start of the stored contour "
@@ -281,12 +281,14 @@ void Channel::interpolate(double t) {
   // The program ends once its last M functions and dwells are done, and no
   // stop (M00, M01, an insert stop mark at the end) holds it; a decode
   // error stops the channel after every block decoded correctly.
-  if (progress == PathProgress::all_blocks_run && !actions_.waiting() && !programmed_stop_.stopped() &&
-      !insert_->at_mark() && !insert_->pending() && !lift_->running() && hli_.channel_state != ChannelState::error)
-    hli_.channel_state = decode_failed_ ? ChannelState::error : ChannelState::program_end;
+  if (progress == PathProgress::all_blocks_run && !holds_program_end() && hli_.channel_state != ChannelState::error)
+    enter(decode_failed_ ? ChannelState::error : ChannelState::program_end);
   if (hli_.channel_state == ChannelState::program_end || hli_.channel_state == ChannelState::error)
     insert_->program_end();
 }
+
+// The one place channel_state changes.
+void Channel::enter(ChannelState state) { hli_.channel_state = state; }
 
 void Channel::start_short_cut(double t) {
   lift_->land_now(*path_);  // in a lift range: the lift axis lands first, the path waits
@@ -296,7 +298,7 @@ void Channel::start_short_cut(double t) {
   switch (outcome) {
     case DeleteDistanceToGo::Outcome::short_cut: path_->go_on_from_standstill(t); break;
     case DeleteDistanceToGo::Outcome::no_target: break;
-    case DeleteDistanceToGo::Outcome::aborted: hli_.channel_state = ChannelState::error; break;
+    case DeleteDistanceToGo::Outcome::aborted: enter(ChannelState::error); break;
   }
 }
 
@@ -320,6 +322,7 @@ void Channel::change_direction(double t, bool standing) {
 
 void Channel::drive_error(const std::string& axis, const std::string& what) {
   if (error_stop_.begin(axis, what, hli_.channel_state, events_)) {
+    enter(ChannelState::error);
     lift_->stop_now();
     update_hold();
   }
@@ -327,27 +330,10 @@ void Channel::drive_error(const std::string& axis, const std::string& what) {
 
 void Channel::error_stop(const std::string& reason) {
   if (error_stop_.begin_for(reason, "", hli_.channel_state, events_)) {
+    enter(ChannelState::error);
     lift_->stop_now();
     update_hold();
   }
-}
-
-PathHold Channel::hold() const {
-  PathHold hold;
-  hold.set(HoldReason::feedhold, hli_.feedhold.state_r);
-  hold.set(HoldReason::short_cut_pending, ddtg_.pending());
-  hold.set(HoldReason::channel_error, hli_.channel_state == ChannelState::error);
-  hold.set(HoldReason::m_function_ack, actions_.waiting_for_acknowledgement());
-  hold.set(HoldReason::dwell, actions_.in_dwell());
-  hold.set(HoldReason::direction_change, backward_.change_pending(path_->direction()));
-  hold.set(HoldReason::insert_command, insert_->pending() && hli_.channel_state == ChannelState::active);
-  hold.set(HoldReason::programmed_stop, programmed_stop_.stopped());
-  hold.set(HoldReason::lift_positioning, lift_->holds_path());
-  return hold;
-}
-
-void Channel::update_hold() {
-  path_->set_velocity_factor(hold().velocity_factor(lift_->override_cap(hli_.override.state_r)));  // LIFT-8
 }
 
 void Channel::reach_block(const Block& block, size_t index, bool run_commands) {

@@ -13,6 +13,7 @@
 //   programmed_stop        M00 / M01, continue motion, m01_stop_enable (ISC-5)
 //   lift                   LIFT-1 .. LIFT-8: the lift axis' setpoint in a lift range
 //   path_hold              why the path holds: velocity factor, stop_conditions_r
+//                          (channel_holds.cpp: each unit's reason; what holds program end)
 //   path_interpolator      look-ahead, plan, block cursors, travel direction
 //   block search (cnc/search)  DPS-3: a program start at a block number and distance
 //   reset                  abort the program where the path stands: READY again
@@ -100,6 +101,8 @@ class Channel : private PathObserver {
   void leave_insert_mark(double t);
   double distance_mm() const;
   void write_state();
+  void enter(ChannelState state);
+  bool holds_program_end() const;
 
   void start_program(const ControlUnitBlockSearch& search);
   // DPS-3: the program goes on from the continuation point; false if the

@@ -2,14 +2,13 @@
 
 namespace hil::cnc {
 
-bool DriveErrorStop::begin_for(const std::string& reason, const std::string& axis, ChannelState& state,
+bool DriveErrorStop::begin_for(const std::string& reason, const std::string& axis, ChannelState state,
                                ChannelEvents& events) {
   if (state == ChannelState::error || state == ChannelState::program_end) return false;
   Event e = events.at_block(Severity::error, "channel stopped: " + reason + "; program aborted");
   e.axis = axis;
   events.raise(e);
   stopping_ = state == ChannelState::active;
-  state = ChannelState::error;
   return true;
 }
 
