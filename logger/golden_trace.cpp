@@ -393,7 +393,6 @@ GoldenTrace golden_trace_of_log(const std::string& path) {
   if (file.records() == 0) throw std::runtime_error(path + " is not an LCM event log (no event found)");
   if (file.damage().any()) throw std::runtime_error(path + " is damaged: " + file.damage().describe());
   trace.finish();
-  trace.comment = path;
   return trace;
 }
 

@@ -45,7 +45,7 @@ class GoldenTrace {
   void finish();
 
   const std::vector<TraceChannel>& channels() const { return channels_; }
-  std::string comment;  // where it came from (one line)
+  std::string comment;  // where it came from (one line; no temporary path, so that a trace rewritten alike is the same file)
 
   // The xz-compressed text; read() throws std::runtime_error naming the
   // file and line of what it cannot read.

@@ -14,8 +14,9 @@ logger::GoldenTrace trace_of(const std::string& path) {
 
 }  // namespace
 
-int write_golden_trace(const std::string& log, const std::string& out, std::ostream& said) {
-  const logger::GoldenTrace trace = logger::golden_trace_of_log(log);
+int write_golden_trace(const std::string& log, const std::string& out, const std::string& comment, std::ostream& said) {
+  logger::GoldenTrace trace = logger::golden_trace_of_log(log);
+  trace.comment = comment.empty() ? log : comment;
   trace.write(out);
   size_t rows = 0;
   for (const logger::TraceChannel& c : trace.channels()) rows += c.rows.size();

@@ -9,7 +9,8 @@
 namespace hil::rig {
 
 // 0 written, 2 the log cannot be read (said on stderr by the caller's catch).
-int write_golden_trace(const std::string& log, const std::string& out, std::ostream& said);
+// `comment`: where it came from (default: the log's path).
+int write_golden_trace(const std::string& log, const std::string& out, const std::string& comment, std::ostream& said);
 // 0 same, 1 different.
 int compare_command(const std::string& a, const std::string& b, std::ostream& said);
 

@@ -141,6 +141,8 @@ int main(int argc, char** argv) {
                 "later build (docs/GOLDEN.md)");
   golden_cmd->add_option("log", log_file, "LCM event log of a rig run")->required()->check(CLI::ExistingFile);
   golden_cmd->add_option("--out", golden_out, "the trace file (.trace.xz)")->required();
+  std::string golden_comment;
+  golden_cmd->add_option("--comment", golden_comment, "where it came from, kept in the file (default: the log's path)");
 
   std::string spy_source = hil::rig::default_lcm_url;
   double speed = 1.0;
@@ -201,7 +203,7 @@ int main(int argc, char** argv) {
     if (*check_cmd) return check_log(log_file, plot_dir);
     if (*export_cmd) return hil::rig::export_csv_command(log_file, csv_dir);
     if (*compare_cmd) return hil::rig::compare_command(pair[0], pair[1], std::cout);
-    if (*golden_cmd) return hil::rig::write_golden_trace(log_file, golden_out, std::cout);
+    if (*golden_cmd) return hil::rig::write_golden_trace(log_file, golden_out, golden_comment, std::cout);
   } catch (const hil::ConfigError& e) {
     std::cerr << "hil: " << e.what() << '\n';
     return 2;

@@ -25,7 +25,9 @@ def logs_of(run, golden):
     root = pathlib.Path(run["run_dir"])
     for log in sorted(root.rglob("run.lcmlog")):
         rel = log.parent.relative_to(root)
-        yield log, (stem.with_suffix(".trace.xz") if rel == pathlib.Path(".") else stem / f"{rel}.trace.xz")
+        own = rel == pathlib.Path(".")
+        yield log, (stem.with_suffix(".trace.xz") if own else stem / f"{rel}.trace.xz"), \
+            str(scenario) + ("" if own else f", variant {rel}")
 
 
 def main():
@@ -33,11 +35,12 @@ def main():
     runs = [r for r in json.load(open(results))["runs"] if r["verdict"] != "SKIPPED"]
     count, bad = 0, []
     for run in runs:
-        for log, trace in logs_of(run, golden):
+        for log, trace, source in logs_of(run, golden):
             count += 1
             if mode == "write":
                 trace.parent.mkdir(parents=True, exist_ok=True)
-                subprocess.run([hil, "golden", str(log), "--out", str(trace)], check=True, stdout=subprocess.DEVNULL)
+                subprocess.run([hil, "golden", str(log), "--out", str(trace), "--comment", source], check=True,
+                               stdout=subprocess.DEVNULL)
                 continue
             if not trace.exists():
                 bad.append(f"{run['scenario_file']}: no golden trace {trace} (scripts/golden.sh writes it)")
