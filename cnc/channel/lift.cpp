@@ -101,7 +101,8 @@ void Lift::stop_now() {
 void Lift::finish() {
   const double pos = range().command.pos;
   // Lifting lands with the path by construction; Advanced Lifting before it.
-  if (advanced_ && !advanced_->landed() && (std::abs(state_.p - pos) > tolerance::length_mm || std::abs(state_.v) > tolerance::velocity_mm_s))
+  if (advanced_ && !advanced_->landed() &&
+      (std::abs(state_.p - pos) > tolerance::length_mm || std::abs(state_.v) > tolerance::velocity_mm_s))
     missed_landing_ = true;
   if (blocks_run_) {
     parked_axis_ = static_cast<size_t>(range().command.axis);

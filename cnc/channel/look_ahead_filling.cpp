@@ -220,7 +220,8 @@ void PathInterpolator::restart_here(double t) {
         a.motion.type != b.motion.type)
       return false;
     for (size_t i = 0; i < a.motion.end.size(); ++i)
-      if (std::abs(a.motion.end[i] - b.motion.start[i]) > tolerance::same_point_share * (1 + std::abs(b.motion.start[i]))) return false;
+      if (std::abs(a.motion.end[i] - b.motion.start[i]) > tolerance::same_point_share * (1 + std::abs(b.motion.start[i])))
+        return false;
     return true;
   };
   if (stop.curve) {

@@ -157,8 +157,8 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
     // Met only on the stretch's end: a plan that brakes a to 0 beyond it
     // reaches v_end there, past the transition it had to keep (fuzz seed
     // 12016401: 1.57 mm beyond, X's acceleration 24,512 for 2,000).
-    plan_meets_end_ =
-        plan_.end().v <= v_end + tolerance::velocity_mm_s * (1 + v_end) && plan_.end().p <= length + tolerance::length_at(length);
+    plan_meets_end_ = plan_.end().v <= v_end + tolerance::velocity_mm_s * (1 + v_end) &&
+                      plan_.end().p <= length + tolerance::length_at(length);
     if (plan_meets_end_) break;
     Stretch longer = look_ahead_.stretch(state.v, through);
     if (longer.length <= st.length) break;  // nothing to run through
