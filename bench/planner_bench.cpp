@@ -135,7 +135,7 @@ Pass run_pass(const std::string& path, const MachineConfig& machine, bool plan) 
   double v_entry = 0;
   auto plan_front = [&] {
     const Stretch st = look_ahead.stretch(v_entry);
-    pass.planned_time += block_profile({0, v_entry, 0, 0}, st.length, st.v_end, st.lim, st.slope).duration();
+    pass.planned_time += block_profile({0, v_entry, 0, 0}, st.length, st.v_end, st.lim, st.slope).profile.duration();
     v_entry = look_ahead.front().v_end;
     look_ahead.pop_front();
   };

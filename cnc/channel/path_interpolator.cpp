@@ -153,18 +153,37 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
         v_end = 0;
       }
     }
-    plan_ = block_profile(state, length, v_end, st.lim, st.slope);
-    // Met only on the stretch's end: a plan that brakes a to 0 beyond it
-    // reaches v_end there, past the transition it had to keep (fuzz seed
-    // 12016401: 1.57 mm beyond, X's acceleration 24,512 for 2,000).
-    plan_meets_end_ = plan_.end().v <= v_end + tolerance::velocity_mm_s * (1 + v_end) &&
-                      plan_.end().p <= length + tolerance::length_at(length);
-    if (plan_meets_end_) break;
+    BlockProfile planned = block_profile(state, length, v_end, st.lim, st.slope);
+    plan_ = std::move(planned.profile);
+    plan_arrival_ = planned.arrival;
+    // Too fast on the stretch's end, or on v_end only beyond it (fuzz seed
+    // 12016401: a plan that brakes a to 0 reached v_end 1.57 mm past the
+    // transition it had to keep, X's acceleration 24,512 for 2,000): the
+    // transition cannot be kept, the stretch runs through it.
+    if (keeps_end(plan_arrival_)) break;
     Stretch longer = look_ahead_.stretch(state.v, through);
     if (longer.length <= st.length) break;  // nothing to run through
     st = longer;
   }
   plan_start_cycles_ = t0 / machine_.cycle_time_s();
+}
+
+void PathInterpolator::replan(double t) {
+  const MotionProfile before = plan_;
+  const double before_start = plan_start_cycles_;
+  const Arrival before_arrival = plan_arrival_;
+  plan(path_state_at(t), t);
+  // An override change while the path brakes for a limiting transition can
+  // leave no plan that keeps it (a curvature step's jerk share: fuzz seed
+  // 2089732 reached the start of the stored contour at 4.8 mm/s, 2,700
+  // mm/s^2); the plan made before keeps it: it stays, and the new factor
+  // acts from the next transition. A stop must be planned for: that plan is
+  // taken whatever its arrival.
+  if (!replan_ && !keeps_end(plan_arrival_) && keeps_end(before_arrival)) {
+    plan_ = before;
+    plan_start_cycles_ = before_start;
+    plan_arrival_ = before_arrival;
+  }
 }
 
 std::vector<Motion> PathInterpolator::path_ahead() const {
@@ -277,21 +296,7 @@ void PathInterpolator::forget_history() {
 }
 
 PathProgress PathInterpolator::interpolate(double t) {
-  if (!look_ahead_.empty() && (replan_ || factor_changed_)) {
-    const MotionProfile before = plan_;
-    const double before_start = plan_start_cycles_;
-    const bool before_met = plan_meets_end_;
-    plan(path_state_at(t), t);
-    // An override change while the path brakes for a limiting transition
-    // can leave no plan that meets it (a curvature step's jerk share: fuzz
-    // seed 2089732 reached the start of the stored contour at 4.8 mm/s,
-    // 2,700 mm/s^2); the plan made before still does: it stays.
-    if (!replan_ && !plan_meets_end_ && before_met) {
-      plan_ = before;
-      plan_start_cycles_ = before_start;
-      plan_meets_end_ = true;
-    }
-  }
+  if (!look_ahead_.empty() && (replan_ || factor_changed_)) replan(t);
   replan_ = factor_changed_ = false;
   MotionState path = path_state_at(t);
   bool reached_contour_start = false;

@@ -17,6 +17,7 @@
 #include "look_ahead.hpp"
 #include "machine_config.hpp"
 #include "motion_profile.hpp"
+#include "position_profile.hpp"
 #include "ring_queue.hpp"
 
 namespace hil::cnc {
@@ -253,6 +254,9 @@ class PathInterpolator {
   // (path position within the block) at time t0.
   void begin_front(const MotionState& state, double t0);
   void plan(const MotionState& state, double t0);
+  // Plans again where the path is at t: a stop was placed or released, or
+  // the velocity factor changed.
+  void replan(double t);
   void finish_front();
   void run_blocks_without_motion(size_t up_to);
   // Drops the blocks nothing needs any more: below the look-ahead, the
@@ -283,7 +287,7 @@ class PathInterpolator {
   double plan_start_cycles_ = 0;  // after program start; a plan may start between two cycles
   bool replan_ = false;          // a stop was placed or released: plan again
   bool factor_changed_ = false;  // the velocity factor changed: plan again
-  bool plan_meets_end_ = true;   // the plan ends at its stretch's end velocity
+  Arrival plan_arrival_ = Arrival::as_asked;  // how the plan arrives at its stretch's end
   // Path length travelled (either direction) before the front segment, and
   // where a stop is asked for on the same scale.
   double travelled_before_front_ = 0;

@@ -12,6 +12,11 @@
 namespace hil::cnc {
 namespace {
 
+// On or before `target`, no faster than v_end but for round-off.
+bool arrives_within(const MotionState& end, double target, double v_end) {
+  return end.v <= v_end + tolerance::velocity_mm_s * (1 + v_end) && end.p <= target + tolerance::length_at(target);
+}
+
 class Planner {
  public:
   // v_end: the velocity to arrive with (a = 0); 0 for a target at rest.
@@ -25,16 +30,16 @@ class Planner {
     const VelocityChange arrive = velocity_change(start_.v, start_.a, v_end_, lim_, slope_);
     const double miss = arrive.end(start_).p - target_;
     if (is_round_off(miss, arrive.duration())) return MotionProfile(start_, phases_of(arrive));
-    return drive_and_arrive(miss < 0 ? 1.0 : -1.0, miss);
+    return drive_and_arrive(miss < 0 ? 1.0 : -1.0, miss).profile;
   }
 
   // Forward only (along a path): if v_end cannot be reached within the
   // distance, arrive with the reachable velocity closest to it.
-  MotionProfile forward() {
+  BlockProfile forward() {
     const VelocityChange arrive = velocity_change(start_.v, start_.a, v_end_, lim_, slope_);
     const double miss = arrive.end(start_).p - target_;
     if (is_round_off(miss, arrive.duration()) || (miss > 0 && miss <= overshoot_tolerance()))
-      return MotionProfile(start_, phases_of(arrive));
+      return {MotionProfile(start_, phases_of(arrive)), Arrival::as_asked};
     if (miss < 0) return drive_and_arrive(1.0, miss);
     // v_end is the most the path may arrive with (a block transition's
     // limit). Arriving with a = 0, a lower velocity can need less way than
@@ -50,7 +55,9 @@ class Planner {
       if (fits(0)) {
         Planner lower(start_, target_, last_fitting(0.0, v_end_, fits), lim_, slope_, search_);
         lower.lowered_ = true;
-        return lower.forward();
+        BlockProfile lowered = lower.forward();
+        if (lowered.arrival == Arrival::as_asked) lowered.arrival = Arrival::slower;
+        return lowered;
       }
     }
     // SIN2 from a state inside a sin² pulse (a replan at a block transition,
@@ -61,7 +68,7 @@ class Planner {
     // least way: arrive with them.
     if (slope_ == SlopeType::sin2)
       return Planner(start_, target_, v_end_, lim_, SlopeType::trapez, search_).forward();
-    return MotionProfile(start_, phases_of(closest_reachable_arrival()));
+    return closest_reachable_arrival();
   }
 
  private:
@@ -97,21 +104,21 @@ class Planner {
   // Drive towards the target as hard as the limits allow and change to
   // v_end at the instant from which that change ends on the target. With
   // lim.v = 0 (feed hold) the drive is a stop short of the target.
-  MotionProfile drive_and_arrive(double dir, double miss) {
+  BlockProfile drive_and_arrive(double dir, double miss) {
     PhaseList phases;
     if (search_ == SwitchSearch::fast && start_.v == 0 && start_.a == 0 && v_end_ == 0 &&
         rest_to_rest_phases(target_ - start_.p, lim_, slope_, phases))
-      return MotionProfile(start_, phases);
+      return {MotionProfile(start_, phases), Arrival::as_asked};
     drive_ = velocity_change(start_.v, start_.a, dir * lim_.v, lim_, slope_);
     const MotionState driven = drive_.end(start_);
     const double miss_driven = overshoot(driven);
     if (dir * miss_driven <= 0) {
       drive_.append_to(phases);
-      if (lim_.v > 0) {  // the target is beyond the full drive: cruise, then arrive
-        phases.push_back(hold(-miss_driven / (dir * lim_.v), 0.0));
-        velocity_change(driven.v, 0, v_end_, lim_, slope_).append_to(phases);
-      }
-      return MotionProfile(start_, phases);
+      if (!(lim_.v > 0)) return {MotionProfile(start_, phases), Arrival::held};
+      // The target is beyond the full drive: cruise, then arrive.
+      phases.push_back(hold(-miss_driven / (dir * lim_.v), 0.0));
+      velocity_change(driven.v, 0, v_end_, lim_, slope_).append_to(phases);
+      return {MotionProfile(start_, phases), Arrival::as_asked};
     }
     MotionState s = start_;
     // SIN2 keeps the search over the whole drive: from a state inside a sin²
@@ -149,7 +156,7 @@ class Planner {
       }
     }
     velocity_change(s.v, s.a, v_end_, lim_, slope_).append_to(phases);
-    return MotionProfile(start_, phases);
+    return {MotionProfile(start_, phases), Arrival::as_asked};
   }
 
   // The end point of a change to v moves monotonically away from v_natural
@@ -162,17 +169,23 @@ class Planner {
   // v_natural far beyond the end (KRN-3: a last block of 0.05 mm entered
   // at 7 mm/s braking, left at 4.8 mm/s, and the setpoint jumped onto the
   // program's end point).
-  VelocityChange closest_reachable_arrival() const {
+  //
+  // The arrival keeps v_end where it is slower on the target (accelerating,
+  // v_natural below v_end); else it is too fast.
+  BlockProfile closest_reachable_arrival() const {
     const double v_natural = std::max(0.0, velocity_after_ramp_to_zero(start_.v, start_.a, lim_, slope_));
     auto change_to = [&](double v) { return velocity_change(start_.v, start_.a, v, lim_, slope_); };
     const VelocityChange natural = change_to(v_natural);
     const double natural_end = natural.end(start_).p;
+    VelocityChange closest = natural;
     if (natural_end >= target_) {
       const VelocityChange to_v_end = change_to(v_end_);
-      return to_v_end.end(start_).p < natural_end ? to_v_end : natural;
+      if (to_v_end.end(start_).p < natural_end) closest = to_v_end;
+    } else {  // v_natural ends before the target, v_end beyond it
+      closest = change_to(last_fitting(v_natural, v_end_, [&](double v) { return change_to(v).end(start_).p <= target_; }));
     }
-    // v_natural ends before the target, v_end beyond it.
-    return change_to(last_fitting(v_natural, v_end_, [&](double v) { return change_to(v).end(start_).p <= target_; }));
+    const bool kept = arrives_within(closest.end(start_), target_, v_end_);
+    return {MotionProfile(start_, phases_of(closest)), kept ? Arrival::slower : Arrival::too_fast};
   }
 
  private:
@@ -311,9 +324,16 @@ MotionProfile position_profile(const MotionState& start, double target, const Li
   return Planner(start, target, 0.0, lim, slope, search).to_rest();
 }
 
-MotionProfile block_profile(const MotionState& start, double end_position, double end_velocity,
-                            const Limits& lim, SlopeType slope, SwitchSearch search) {
-  return Planner(start, end_position, std::clamp(end_velocity, 0.0, lim.v), lim, slope, search).forward();
+BlockProfile block_profile(const MotionState& start, double end_position, double end_velocity, const Limits& lim,
+                           SlopeType slope, SwitchSearch search) {
+  BlockProfile planned = Planner(start, end_position, std::clamp(end_velocity, 0.0, lim.v), lim, slope, search).forward();
+  // Faster than lim.v (the cruise velocity, lowered by the override while
+  // the path moved faster) but not than end_velocity keeps what the block
+  // transition allows.
+  if (planned.arrival == Arrival::too_fast && end_velocity > lim.v &&
+      arrives_within(planned.profile.end(), end_position, end_velocity))
+    planned.arrival = Arrival::slower;
+  return planned;
 }
 
 MotionProfile rest_to_rest(double distance, const Limits& lim, SlopeType slope) {

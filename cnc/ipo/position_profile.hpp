@@ -35,13 +35,32 @@ enum class SwitchSearch { fast, reference };
 MotionProfile position_profile(const MotionState& start, double target, const Limits& lim, SlopeType slope,
                                SwitchSearch search = SwitchSearch::fast);
 
+// How a block profile arrives at its end, as a value the caller acts on
+// (issue 35; as Ruckig's Result), instead of a guess from the profile's end.
+enum class Arrival {
+  as_asked,  // on end_position with end_velocity, a = 0
+  slower,    // on end_position, slower than end_velocity (braking, a lower one can need less way)
+  held,      // short of end_position at rest: lim.v = 0 (feed hold, override 0)
+  too_fast,  // the distance is too short to slow to end_velocity: faster, or beyond end_position
+};
+
+// end_velocity is the most a block transition allows: every arrival but
+// too_fast keeps it.
+inline bool keeps_end(Arrival arrival) { return arrival != Arrival::too_fast; }
+
+struct BlockProfile {
+  MotionProfile profile;
+  Arrival arrival = Arrival::as_asked;
+};
+
 // Forward along a path: from `start` (v >= 0) to `end_position`, arriving
 // with `end_velocity` (clamped to [0, lim.v]) and a = 0, cruising at lim.v.
-// Where end_velocity cannot be reached within the distance, it arrives with
+// From any state there is a profile: where end_velocity cannot be reached
+// within the distance (too_fast), it brakes at full jerk and arrives with
 // the reachable velocity closest to it (and if even ramping a to 0 passes
-// the end, it does that). lim.v = 0 (feed hold, override 0) stops short.
-MotionProfile block_profile(const MotionState& start, double end_position, double end_velocity,
-                            const Limits& lim, SlopeType slope, SwitchSearch search = SwitchSearch::fast);
+// the end, it does that). lim.v = 0 stops short (held).
+BlockProfile block_profile(const MotionState& start, double end_position, double end_velocity, const Limits& lim,
+                           SlopeType slope, SwitchSearch search = SwitchSearch::fast);
 
 // Rest-to-rest from p = 0 to p = distance.
 MotionProfile rest_to_rest(double distance, const Limits& lim, SlopeType slope = SlopeType::trapez);

@@ -139,12 +139,12 @@ TEST_CASE("KRN-3 look-ahead: holds FCT_LOOK_AHEAD_STANDARD = 120 blocks and can 
   const Stretch st = standard.stretch(0);
   CHECK(st.length == Approx(1.2));
   CHECK(st.v_end == 0);
-  const MotionProfile from_rest = block_profile({}, st.length, st.v_end, st.lim, SlopeType::trapez);
+  const MotionProfile from_rest = block_profile({}, st.length, st.v_end, st.lim, SlopeType::trapez).profile;
   CHECK(from_rest.end().p == Approx(1.2).epsilon(1e-12));
   CHECK(from_rest.end().v == 0);
   CHECK(longer.stretch(0).length == Approx(4.0));  // a longer window plans further ahead
   const double v_window = extremes(from_rest).max_v;
-  CHECK(v_window < extremes(block_profile({}, 4.0, 0, st.lim, SlopeType::trapez)).max_v);
+  CHECK(v_window < extremes(block_profile({}, 4.0, 0, st.lim, SlopeType::trapez).profile).max_v);
   // And the channel never plans beyond its window: limits hold.
   std::ostringstream nc;
   for (int i = 1; i <= 400; ++i) nc << "G01 X" << i * 0.01 << " F60000\n";

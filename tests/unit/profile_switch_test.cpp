@@ -172,8 +172,8 @@ TEST_CASE("KRN-3 profile, issue 17: forward to a block end, fast and reference s
     if (v_natural < 0 || v_natural > lim.v) continue;
     const double target = 0.05 * u(rng), v_end = i % 4 == 0 ? 0.0 : lim.v * u(rng);
     ++cases;
-    const MotionProfile fast = block_profile(s, target, v_end, lim, slope);
-    const MotionProfile reference = block_profile(s, target, v_end, lim, slope, SwitchSearch::reference);
+    const MotionProfile fast = block_profile(s, target, v_end, lim, slope).profile;
+    const MotionProfile reference = block_profile(s, target, v_end, lim, slope, SwitchSearch::reference).profile;
     const double T = reference.duration(), difference = std::abs(fast.duration() - T);
     if (T > 0) worst = std::max(worst, difference / T);
     const bool ok = difference <= 1e-12 * T + 1e-15 && std::abs(fast.end().p - reference.end().p) <= 1e-12 &&

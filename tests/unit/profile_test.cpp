@@ -274,11 +274,11 @@ TEST_CASE("KRN-3 profile: states outside the limits are brought back, never driv
   CHECK(later.a == Approx(0).margin(1e-12));
 }
 
-TEST_CASE("KRN-3 profile: forward to a block end with an end velocity, a lower one, or the closest reachable one",
+TEST_CASE("KRN-3 profile: forward to a block end with an end velocity, a lower one, or the closest reachable one, and an arrival status that says which",
           "[ipo]") {
   std::mt19937_64 rng(31415);
   std::uniform_real_distribution<double> u(0, 1);
-  long reached = 0, lower = 0, closest = 0, failures = 0;
+  long reached = 0, lower = 0, closest = 0, too_fast = 0, failures = 0;
   std::ostringstream first;
   for (int i = 0; i < 200000; ++i) {
     const Limits lim = random_limits(rng);
@@ -289,7 +289,8 @@ TEST_CASE("KRN-3 profile: forward to a block end with an end velocity, a lower o
     } while (velocity_after_ramp_to_zero(s.v, s.a, lim, slope) < 0 ||
              velocity_after_ramp_to_zero(s.v, s.a, lim, slope) > lim.v);
     const double target = 0.05 * u(rng), v_end = lim.v * u(rng);
-    const MotionProfile p = block_profile(s, target, v_end, lim, slope);
+    const BlockProfile planned = block_profile(s, target, v_end, lim, slope);
+    const MotionProfile& p = planned.profile;
     const MotionProfile direct = velocity_profile(s, v_end, lim, slope);
     const ProfileExtremes x = extremes(p);
     const MotionState e = p.end();
@@ -298,7 +299,8 @@ TEST_CASE("KRN-3 profile: forward to a block end with an end velocity, a lower o
               std::abs(e.a) <= 1e-9 * lim.a && min_velocity(p) >= -1e-9 * lim.v;  // never backwards on a path
     if (direct.end().p <= target) {  // v_end reachable within the distance
       ++reached;
-      ok = ok && std::abs(e.p - target) <= 1e-9 && std::abs(e.v - v_end) <= 1e-9 * lim.v;
+      ok = ok && std::abs(e.p - target) <= 1e-9 && std::abs(e.v - v_end) <= 1e-9 * lim.v &&
+           planned.arrival == Arrival::as_asked;
     } else if (velocity_change(s.v, s.a, 0, lim, slope).end(s).p <= target ||
                (slope == SlopeType::sin2 &&  // SIN2 that cannot arrive falls back to full-jerk linear ramps
                 velocity_change(s.v, s.a, 0, lim, SlopeType::trapez).end(s).p <= target)) {
@@ -306,15 +308,20 @@ TEST_CASE("KRN-3 profile: forward to a block end with an end velocity, a lower o
       // can be reached on the target is taken (braking, a lower end
       // velocity can need less way).
       ++lower;
-      ok = ok && std::abs(e.p - target) <= 1e-9 && e.v <= v_end + 1e-9 * lim.v;
+      ok = ok && std::abs(e.p - target) <= 1e-9 && e.v <= v_end + 1e-9 * lim.v &&
+           (planned.arrival == Arrival::slower || planned.arrival == Arrival::as_asked);
     } else {
       ++closest;
       const double lo = std::min(v_end, v_natural), hi = std::max(v_end, v_natural);
       ok = ok && e.v >= lo - 1e-9 * lim.v && e.v <= hi + 1e-9 * lim.v && e.p >= target - 1e-9;
+      // The status says whether the arrival keeps v_end as the most allowed.
+      const bool kept = e.v <= v_end + 1e-9 * (1 + v_end) && e.p <= target + 1e-9 * (1 + target);
+      ok = ok && kept == keeps_end(planned.arrival);
+      if (!kept) ++too_fast;
     }
     // With v_end = 0 it is the (time-optimal) positioning to rest.
     if (ok && i % 10 == 0) {
-      const MotionProfile to_rest = block_profile(s, target, 0, lim, slope);
+      const MotionProfile to_rest = block_profile(s, target, 0, lim, slope).profile;
       const MotionProfile positioned = position_profile(s, target, lim, slope);
       if (positioned.end().p >= target - 1e-9 && extremes(positioned).max_v <= lim.v * (1 + 1e-9) &&
           velocity_change(s.v, s.a, 0, lim, slope).end(s).p <= target)
@@ -324,10 +331,12 @@ TEST_CASE("KRN-3 profile: forward to a block end with an end velocity, a lower o
       first << to_string(slope) << ' ' << describe(s, target, lim) << " v_end=" << v_end << " -> p=" << e.p
             << " v=" << e.v << " a=" << e.a << " max v=" << x.max_v << " a=" << x.max_a << '\n';
   }
-  INFO(reached << " reached, " << lower << " lower, " << closest << " closest; " << failures << " failed:\n"
+  INFO(reached << " reached, " << lower << " lower, " << closest << " closest (" << too_fast << " too fast); "
+                << failures << " failed:\n"
                 << first.str());
   CHECK(reached > 50000);
   CHECK(lower > 1000);
   CHECK(closest > 10000);
+  CHECK(too_fast > 1000);
   REQUIRE(failures == 0);
 }
