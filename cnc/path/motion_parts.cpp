@@ -21,13 +21,13 @@ constexpr double nothing_left_mm = tolerance::length_mm;
 
 // How far along the motion the point lies from its start; none if it is off it.
 std::optional<double> along(const Motion& motion, const PathSegment& whole, const std::vector<double>& point,
-                            const MachineConfig& machine, bool at_end_if_closed) {
+                            bool at_end_if_closed) {
   const bool at_start = distance(point, motion.start) <= on_motion_mm;
   const bool at_end = distance(point, motion.end) <= on_motion_mm;
   if (at_start && at_end) return at_end_if_closed ? whole.length() : 0.0;
   if (at_start) return 0.0;
   if (at_end) return whole.length();
-  const double s = PathSegment(motion_until(motion, point), machine).length();
+  const double s = whole.length_to(point);
   if (!(s <= whole.length()) || distance(whole.position(s), point) > on_motion_mm) return std::nullopt;
   return s;
 }
@@ -55,7 +55,7 @@ std::optional<Motion> rest_of_motion(const Motion& motion, const std::vector<dou
                                      const MachineConfig& machine, bool at_end_if_closed) {
   const AxisValues& target = backward ? motion.start : motion.end;
   const PathSegment whole(motion, machine);
-  if (const std::optional<double> s = along(motion, whole, point, machine, at_end_if_closed)) {
+  if (const std::optional<double> s = along(motion, whole, point, at_end_if_closed)) {
     const double rest = backward ? *s : whole.length() - *s;
     if (rest > shortest_part_mm) return backward ? reversed(motion_until(motion, point)) : motion_from(motion, point);
   }

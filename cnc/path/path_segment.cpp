@@ -194,6 +194,19 @@ void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) 
   limits_ = {v, a, j};
 }
 
+double PathSegment::length_to(const AxisValues& point) const {
+  if (!arc_) {
+    double s = 0;
+    for (size_t i = 0; i < start_.size(); ++i) s += (point[i] - start_[i]) * unit_[i];
+    return std::clamp(s, 0.0, length_);
+  }
+  // Along a spiral (end radius off the start radius) the angle, not a
+  // part's own length, tells where the point lies: s is linear in it.
+  double turned = direction_ * (std::atan2(point[at(iy_)] - cy_, point[at(ix_)] - cx_) - angle0_);
+  turned = std::fmod(turned + 2 * two_pi, two_pi);
+  return turned / sweep_ * length_;
+}
+
 std::vector<double> PathSegment::position(double s) const {
   if (joint_) return joint_->curve->position(curve_position(s));
   std::vector<double> p(start_.size());

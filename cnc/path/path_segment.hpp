@@ -49,6 +49,12 @@ class PathSegment {
   // at every block transition.
   void tangent(double s, double* t) const;
   std::vector<double> curvature(double s) const;
+  // Of a line or arc: the path length s at which the motion passes the
+  // point nearest to `point` along it (a line's projection, an arc's
+  // angle), in [0, length] where the point lies within the motion's span,
+  // above length where an arc's angle lies beyond its end. Whether the
+  // point lies on the motion is the caller's: compare position(s).
+  double length_to(const AxisValues& point) const;
 
  private:
   double angle_at(double s) const { return angle0_ + direction_ * sweep_ * s / length_; }

@@ -469,6 +469,16 @@ TEST_CASE("KRN-3 KRN-6 a block after a dwell that follows an arc: the arc keeps 
   check_seeds(fuzz::ProgramKind::contour, {13009555});
 }
 
+TEST_CASE("KRN-5 DPS-1 a turn on an arc whose end radius is off its start radius goes on along the arc",
+          "[channel][fuzz]") {
+  // W (docs/FUZZ.md): after a block search re-decoded an incremental block
+  // from where the axes stood, a 321 degree G02 began 0.0015 mm off its end
+  // radius; a point on it looked off the arc, the rest after a turn was a
+  // straight line, and dist_prog_start changed 0.389 mm in one cycle
+  // (limit 0.384): arcs 15000914.
+  check_seeds(fuzz::ProgramKind::arcs, {15000914});
+}
+
 TEST_CASE("DPS-1 KRN-6 dist_prog_start on contouring curves at arcs of 0.13 mm radius and less grows with the chord",
           "[.][known-bug][channel][contour]") {
   // Open (docs/FUZZ.md M and U): a curve counts the programmed distance of

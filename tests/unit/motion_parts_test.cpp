@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "motion_parts.hpp"
+#include "path_segment.hpp"
 #include "test_machine.hpp"
 
 using namespace hil;
@@ -80,4 +81,32 @@ TEST_CASE("KRN-5 rest_of_motion: on a full circle its start is its end, the hint
   REQUIRE(from_start);  // the whole circle ahead
   CHECK(from_start->type == MotionType::arc_ccw);
   CHECK_FALSE(rest_of_motion(circle, {10, 0, 0}, false, machine, true));  // at its end: nothing left
+}
+
+TEST_CASE("KRN-5 rest_of_motion: a point on an arc whose end radius is off its start radius lies on the arc",
+          "[path][backward]") {
+  // W (docs/FUZZ.md, arcs seed 15000914): the decoder accepts an end radius
+  // a little off the start radius and the arc blends it (a spiral). A part
+  // of it up to a point blends to that point's radius, so its own length is
+  // not the whole arc's path length there: the point looked off the arc and
+  // the rest became a straight line.
+  const MachineConfig machine = test::xyz_machine();
+  Motion spiral = line({15, 0, 0}, {0, -15.0015, 0}, MotionType::arc_ccw);  // 270 degrees
+  spiral.center[0] = spiral.center[1] = 0;
+  const PathSegment whole(spiral, machine);
+  for (double share : {0.1, 0.5, 0.9}) {
+    const std::vector<double> point = whole.position(share * whole.length());
+    CHECK(whole.length_to(point) == Approx(share * whole.length()).epsilon(1e-12));
+    const auto ahead = rest_of_motion(spiral, point, false, machine);
+    REQUIRE(ahead);
+    CHECK(ahead->type == MotionType::arc_ccw);
+    const auto back = rest_of_motion(spiral, point, true, machine);
+    REQUIRE(back);
+    CHECK(back->type == MotionType::arc_cw);
+    // Both parts run on the whole arc's path: their midpoints lie on it.
+    const PathSegment rest(*ahead, machine);
+    const std::vector<double> middle = rest.position(rest.length() / 2);
+    const std::vector<double> on_whole = whole.position(whole.length_to(middle));
+    CHECK(std::hypot(middle[0] - on_whole[0], middle[1] - on_whole[1]) < 1e-6);
+  }
 }
