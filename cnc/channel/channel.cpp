@@ -10,9 +10,9 @@ Channel::Channel(MachineConfig machine, std::string nc_program)
     : Channel(std::move(machine), program_text(std::move(nc_program))) {}
 
 Channel::Channel(MachineConfig machine, ProgramText nc_program)
-    : machine_(std::move(machine)), nc_program_(std::move(nc_program)), path_(std::in_place, machine_, static_cast<PathObserver&>(*this)),
-      feed_(machine_.override_max_percent), ddtg_(machine_), backward_(machine_), insert_(std::in_place, machine_),
-      lift_(std::in_place, machine_), setpoints_(path_->setpoints()) {
+    : machine_(std::move(machine)), nc_program_(std::move(nc_program)),
+      run_(std::in_place, machine_, static_cast<PathObserver&>(*this)), feed_(machine_.override_max_percent),
+      ddtg_(machine_), backward_(machine_), setpoints_(run_->path.setpoints()) {
   for (const AxisConfig& axis : machine_.axes) hli_.axis_name.push_back(axis.name);
   hli_.axis_position_r.assign(machine_.axes.size(), 0);
   hli_.lift_active.assign(machine_.axes.size(), false);
@@ -24,7 +24,7 @@ Channel::Channel(MachineConfig machine, ProgramText nc_program)
 
 bool Channel::finished() const {
   return hli_.channel_state == ChannelState::program_end ||
-         (hli_.channel_state == ChannelState::error && !error_stop_.stopping());
+         (hli_.channel_state == ChannelState::error && !run_->error_stop.stopping());
 }
 
 void Channel::step(int64_t cycle, const HliControl& control) {
@@ -39,9 +39,9 @@ void Channel::apply_control(const HliControl& control) {
   const bool backward_changed = backward_.apply(control.backward_motion, hli_, events_);
   if (feed_changed || backward_changed) update_hold();
   if (ddtg_.apply(control, hli_.channel_state == ChannelState::active, hli_, events_)) update_hold();
-  if (insert_->take(control.insert_cmd, hli_)) update_hold();
+  if (run_->insert.take(control.insert_cmd, hli_)) update_hold();
   if (programmed_stop_.apply(control, hli_)) {  // continue motion (ISC-5)
-    if (insert_->at_mark()) leave_insert_mark(time_s());
+    if (run_->insert.at_mark()) leave_insert_mark(time_s());
     update_hold();
   }
   apply_reset(control.reset);
@@ -49,7 +49,7 @@ void Channel::apply_control(const HliControl& control) {
   const ControlUnitUns32& ignore = control.program_block_ignore;
   hli_.program_block_ignore.request_r = ignore.enable_w;
   hli_.program_block_ignore.state_r = ignore.enable_w ? ignore.command_w : 0;
-  if (program_) program_->set_block_ignore(hli_.program_block_ignore.state_r);
+  if (run_->program) run_->program->set_block_ignore(hli_.program_block_ignore.state_r);
   apply_zero_offset(control.zero_offset);
   apply_program_start(control);
 }
@@ -70,7 +70,7 @@ void Channel::apply_zero_offset(const ControlUnitZeroOffset& write) {
     return;
   }
   zero_offsets_[c.group - 1][c.axis_nr - 1] = mm;
-  if (program_) program_->set_zero_offsets(zero_offsets_);
+  if (run_->program) run_->program->set_zero_offsets(zero_offsets_);
 }
 
 // KRN-4: control units act on the rising edge of command_w while enable_w.
@@ -95,8 +95,8 @@ void Channel::apply_reset(const ControlUnitBool& reset) {
   hli_.reset.request_r = reset.command_w && reset.enable_w;
   hli_.reset.state_r = false;
   if (!reset_(reset.command_w) || !reset.enable_w) return;
-  if (hli_.channel_state == ChannelState::active || error_stop_.stopping()) {
-    if (!path_->standing(time_s()) || error_stop_.stopping() || lift_->positioning()) {
+  if (hli_.channel_state == ChannelState::active || run_->error_stop.stopping()) {
+    if (!run_->path.standing(time_s()) || run_->error_stop.stopping() || run_->lift.positioning()) {
       Event ignored = events_.at_block(Severity::warning, "reset ignored: the path moves (stop it first, feed hold)");
       events_.raise(ignored);
       return;
@@ -117,21 +117,12 @@ void Channel::apply_reset(const ControlUnitBool& reset) {
 
 void Channel::begin_program_run() {
   const std::vector<AxisSetpoint> standing = setpoints_;
-  path_.emplace(machine_, static_cast<PathObserver&>(*this));
-  program_.reset();  // the aborted run's stream (the new interpolator reads nothing yet)
-  for (size_t i = 0; i < standing.size(); ++i) path_->place_axis(i, standing[i].position);
-  setpoints_ = path_->setpoints();
-  insert_.emplace(machine_);
-  lift_.emplace(machine_);
+  run_.emplace(machine_, static_cast<PathObserver&>(*this));  // the aborted run's stream with it
+  for (size_t i = 0; i < standing.size(); ++i) run_->path.place_axis(i, standing[i].position);
+  setpoints_ = run_->path.setpoints();
   ddtg_.abort();
   actions_.abort();
   programmed_stop_.abort();
-  distance_ = DistanceFromProgramStart();
-  error_stop_ = DriveErrorStop();
-  continuation_block_.reset();
-  continuation_reached_ = false;
-  decode_failed_ = false;
-  backward_refused_ = false;
   enter(ChannelState::ready);
   hli_.block_search.state_r = BlockSearchState();
   hli_.dist_prog_start = 0;
@@ -144,24 +135,24 @@ void Channel::begin_program_run() {
 void Channel::start_program(const ControlUnitBlockSearch& search) {
   std::vector<double> start_position;  // a lift axis parked by the last program's lift included
   for (const AxisSetpoint& setpoint : setpoints_) start_position.push_back(setpoint.position);
-  lift_->begin_program();
-  program_ = std::make_unique<ProgramStream>(nc_program_, machine_, start_position,
-                                             [this](LiftRange range) { lift_->add_range(std::move(range)); });
-  program_->set_block_ignore(hli_.program_block_ignore.state_r);
-  program_->set_zero_offsets(zero_offsets_);
+  run_->lift.begin_program();
+  run_->program = std::make_unique<ProgramStream>(nc_program_, machine_, start_position,
+                                             [this](LiftRange range) { run_->lift.add_range(std::move(range)); });
+  run_->program->set_block_ignore(hli_.program_block_ignore.state_r);
+  run_->program->set_zero_offsets(zero_offsets_);
   hli_.block_search.state_r = BlockSearchState();
   if (search.enable_w && !search_continuation(search)) {
     take_stream_events();
-    decode_failed_ = false;  // the program did not start: the channel stays READY
-    program_.reset();
+    run_->decode_failed = false;  // the program did not start: the channel stays READY
+    run_->program.reset();
     return;
   }
-  path_->load(program_->blocks(), backward_.stored_blocks());
-  backward_refused_ = false;
+  run_->path.load(run_->program->blocks(), backward_.stored_blocks());
+  run_->backward_refused = false;
   start_cycle_ = cycle_;
   enter(ChannelState::active);
-  if (insert_->pending()) insert_->set_pending(*path_, 0, distance_mm(), events_);  // commanded before the start (ISC-6)
-  path_->go_on_from_standstill(0);
+  if (run_->insert.pending()) run_->insert.set_pending(run_->path, 0, distance_mm(), events_);  // commanded before the start (ISC-6)
+  run_->path.go_on_from_standstill(0);
   update_hold();
   interpolate(0);
 }
@@ -169,25 +160,36 @@ void Channel::start_program(const ControlUnitBlockSearch& search) {
 // Decoding goes on as the path needs blocks: an error is reported when the
 // stream meets it (the blocks before it still run), not at program start.
 void Channel::take_stream_events() {
-  if (!program_) return;
-  if (std::optional<Event> error = program_->take_error()) {
-    decode_failed_ = true;
+  if (!run_->program) return;
+  if (std::optional<Event> error = run_->program->take_error()) {
+    run_->decode_failed = true;
     events_.raise(std::move(*error));
   }
-  for (Event& warning : program_->take_warnings()) events_.raise(std::move(warning));
+  for (Event& warning : run_->program->take_warnings()) events_.raise(std::move(warning));
 }
 
 void Channel::run_path(const HliControl& control, double t) {
   if (actions_.run(control, t, hli_)) update_hold();
   // M<n> of an insert stop mark acknowledged (ISC-5).
-  if (insert_->at_mark() && !programmed_stop_.stopped() && !actions_.waiting()) leave_insert_mark(t);
+  if (run_->insert.at_mark() && !programmed_stop_.stopped() && !actions_.waiting()) leave_insert_mark(t);
   interpolate(t);
-  const bool standing = path_->standing(t);
+  const bool standing = run_->path.standing(t);
   // The error stop ends when the path and an Advanced Lifting axis braking on its own stand (LIFT-2).
-  if (error_stop_.stopping()) error_stop_.update(standing && !lift_->positioning());
-  if (insert_->pending() && standing && hli_.channel_state == ChannelState::active) set_insert_command(t);
-  if (ddtg_.pending() && standing && hli_.channel_state == ChannelState::active) start_short_cut(t);
-  if (hli_.channel_state == ChannelState::active) change_direction(t, path_->standing(t));
+  if (run_->error_stop.stopping()) run_->error_stop.update(standing && !run_->lift.positioning());
+  on_standstill(t, standing);
+}
+
+// What acts where the path stands, in this order: an insert command is set
+// where the path stands before a short cut leaves that place (ISC-6,
+// DDTG-4), and a turn comes last (KRN-5: it waits for the path to stand,
+// and for a short cut asked for to be done). Each acts on the standstill
+// the cycle began with; the turn asks anew, after the others may have
+// moved the path on.
+void Channel::on_standstill(double t, bool standing) {
+  const auto active = [this] { return hli_.channel_state == ChannelState::active; };
+  if (standing && active() && run_->insert.pending()) set_insert_command(t);
+  if (standing && active() && ddtg_.pending()) start_short_cut(t);
+  if (active()) change_direction(t, run_->path.standing(t));
 }
 
 bool Channel::search_continuation(const ControlUnitBlockSearch& search) {
@@ -197,7 +199,7 @@ bool Channel::search_continuation(const ControlUnitBlockSearch& search) {
   request.block_nr = search.command_w.block_nr;
   request.distance_mm = search.command_w.distance / hli_units_per_mm;
   size_t continuation = 0;
-  BlockSearchOutcome outcome = program_->search(request, continuation);
+  BlockSearchOutcome outcome = run_->program->search(request, continuation);
   take_stream_events();  // a decode error before the searched block comes first
   if (!outcome.continuation) {
     if (outcome.error) events_.raise(*outcome.error);
@@ -211,25 +213,25 @@ bool Channel::search_continuation(const ControlUnitBlockSearch& search) {
   state.continuation_block_nr = static_cast<uint32_t>(c.block_nr);
   state.continuation_nc_line = c.nc_line;
   state.continuation_distance = c.distance_mm * hli_units_per_mm;
-  continuation_block_ = continuation;
-  distance_.preset(c.distance_mm, c.distance_counting);
+  run_->continuation_block = continuation;
+  run_->distance.preset(c.distance_mm, c.distance_counting);
   return true;
 }
 
-double Channel::distance_mm() const { return distance_.value_mm(path_->front_covered()); }
+double Channel::distance_mm() const { return run_->distance.value_mm(run_->path.front_covered()); }
 
 // ISC-6: the path stands (stopped briefly if it moved): the mark is set,
 // and the path goes on to it; one at the current distance is reached now.
 void Channel::set_insert_command(double t) {
-  if (insert_->set_pending(*path_, t, distance_mm(), events_)) path_->go_on_from_standstill(t);
+  if (run_->insert.set_pending(run_->path, t, distance_mm(), events_)) run_->path.go_on_from_standstill(t);
   update_hold();
-  if (insert_->reached(*path_, t)) reach_insert_mark(t);
+  if (run_->insert.reached(run_->path, t)) reach_insert_mark(t);
 }
 
 // ISC-5, ISC-7: the mark's M function.
 void Channel::reach_insert_mark(double t) {
-  insert_->begin_stop();
-  const InsertCommand& c = insert_->command();
+  run_->insert.begin_stop();
+  const InsertCommand& c = run_->insert.command();
   if (c.m_function_nr <= 1) {
     if (!programmed_stop_.begin(c.m_function_nr)) {  // M01 while m01_stop_enable is not set: on
       leave_insert_mark(t);
@@ -242,25 +244,25 @@ void Channel::reach_insert_mark(double t) {
 }
 
 void Channel::leave_insert_mark(double t) {
-  if (insert_->leave(*path_, t, distance_mm())) path_->go_on_from_standstill(t);
+  if (run_->insert.leave(run_->path, t, distance_mm())) run_->path.go_on_from_standstill(t);
   update_hold();
 }
 
 void Channel::interpolate(double t) {
-  const PathProgress progress = path_->interpolate(t);
+  const PathProgress progress = run_->path.interpolate(t);
   take_stream_events();
-  if (progress == PathProgress::all_blocks_run || progress == PathProgress::invalid_block) lift_->all_blocks_run();
-  setpoints_ = path_->setpoints();
-  if (lift_->update(*path_, t, hli_.override.state_r, setpoints_)) update_hold();
-  if (lift_->take_missed_landing()) {
+  if (progress == PathProgress::all_blocks_run || progress == PathProgress::invalid_block) run_->lift.all_blocks_run();
+  setpoints_ = run_->path.setpoints();
+  if (run_->lift.update(run_->path, t, hli_.override.state_r, setpoints_)) update_hold();
+  if (run_->lift.take_missed_landing()) {
     events_.raise(events_.at_block(Severity::error, "lift function: the path left the lift range before the lift "
                                                     "axis had landed on POS"));
     enter(ChannelState::error);
   }
-  hli_.dist_prog_start = distance_.value_mm(path_->front_covered()) * hli_units_per_mm;
-  hli_.path_velocity = path_->path_velocity();
+  hli_.dist_prog_start = run_->distance.value_mm(run_->path.front_covered()) * hli_units_per_mm;
+  hli_.path_velocity = run_->path.path_velocity();
   if (progress == PathProgress::invalid_block) {
-    const Block& block = path_->blocks()[*path_->invalid_block()];
+    const Block& block = run_->path.blocks()[*run_->path.invalid_block()];
     Event e = events_.at_block(Severity::error, "the motion of line " + std::to_string(block.nc_line) +
                                                     " has a length or limit that is not a finite number; "
                                                     "the path stops before it; program aborted");
@@ -277,76 +279,76 @@ void Channel::interpolate(double t) {
   if (progress == PathProgress::reached_contour_start)
     events_.raise(events_.at_block(Severity::warning, "backward motion reached the start of the stored contour "
                                                       "(program start, or P-STUP-00033 full); it stands there"));
-  if (hli_.channel_state == ChannelState::active && insert_->reached(*path_, t)) reach_insert_mark(t);
+  if (hli_.channel_state == ChannelState::active && run_->insert.reached(run_->path, t)) reach_insert_mark(t);
   // The program ends once its last M functions and dwells are done, and no
   // stop (M00, M01, an insert stop mark at the end) holds it; a decode
   // error stops the channel after every block decoded correctly.
   if (progress == PathProgress::all_blocks_run && !holds_program_end() && hli_.channel_state != ChannelState::error)
-    enter(decode_failed_ ? ChannelState::error : ChannelState::program_end);
+    enter(run_->decode_failed ? ChannelState::error : ChannelState::program_end);
   if (hli_.channel_state == ChannelState::program_end || hli_.channel_state == ChannelState::error)
-    insert_->program_end();
+    run_->insert.program_end();
 }
 
 // The one place channel_state changes.
 void Channel::enter(ChannelState state) { hli_.channel_state = state; }
 
 void Channel::start_short_cut(double t) {
-  lift_->land_now(*path_);  // in a lift range: the lift axis lands first, the path waits
-  insert_->before_short_cut(*path_, t, distance_mm());
-  const DeleteDistanceToGo::Outcome outcome = ddtg_.start_short_cut(*path_, t, events_);
+  run_->lift.land_now(run_->path);  // in a lift range: the lift axis lands first, the path waits
+  run_->insert.before_short_cut(run_->path, t, distance_mm());
+  const DeleteDistanceToGo::Outcome outcome = ddtg_.start_short_cut(run_->path, t, events_);
   update_hold();
   switch (outcome) {
-    case DeleteDistanceToGo::Outcome::short_cut: path_->go_on_from_standstill(t); break;
+    case DeleteDistanceToGo::Outcome::short_cut: run_->path.go_on_from_standstill(t); break;
     case DeleteDistanceToGo::Outcome::no_target: break;
     case DeleteDistanceToGo::Outcome::aborted: enter(ChannelState::error); break;
   }
 }
 
 void Channel::change_direction(double t, bool standing) {
-  if (!backward_.turn_due(path_->direction(), standing, ddtg_.on_short_cut(), ddtg_.pending(), events_)) return;
-  if (path_->direction() == TravelDirection::forward && !path_->empty() &&
-      lift_->forbids_backward(path_->front_index())) {
-    if (!backward_refused_)
+  if (!backward_.turn_due(run_->path.direction(), standing, ddtg_.on_short_cut(), ddtg_.pending(), events_)) return;
+  if (run_->path.direction() == TravelDirection::forward && !run_->path.empty() &&
+      run_->lift.forbids_backward(run_->path.front_index())) {
+    if (!run_->backward_refused)
       events_.raise(events_.at_block(Severity::warning, "backward motion is not available at or after a lift range "
                                                         "(LIFT-1): the path stands until backward motion is withdrawn"));
-    backward_refused_ = true;
+    run_->backward_refused = true;
     return;
   }
-  insert_->before_turn(*path_, t, distance_mm());  // ISC-9
-  if (!path_->turn(t, backward_.stored_blocks())) return;
+  run_->insert.before_turn(run_->path, t, distance_mm());  // ISC-9
+  if (!run_->path.turn(t, backward_.stored_blocks())) return;
   update_hold();
-  if (path_->empty() && path_->direction() == TravelDirection::backward)
+  if (run_->path.empty() && run_->path.direction() == TravelDirection::backward)
     events_.raise(events_.at_block(Severity::warning, "backward motion: the stored contour begins here; it stands"));
-  path_->go_on_from_standstill(t);
+  run_->path.go_on_from_standstill(t);
 }
 
 void Channel::drive_error(const std::string& axis, const std::string& what) {
-  if (error_stop_.begin(axis, what, hli_.channel_state, events_)) {
+  if (run_->error_stop.begin(axis, what, hli_.channel_state, events_)) {
     enter(ChannelState::error);
-    lift_->stop_now();
+    run_->lift.stop_now();
     update_hold();
   }
 }
 
 void Channel::error_stop(const std::string& reason) {
-  if (error_stop_.begin_for(reason, "", hli_.channel_state, events_)) {
+  if (run_->error_stop.begin_for(reason, "", hli_.channel_state, events_)) {
     enter(ChannelState::error);
-    lift_->stop_now();
+    run_->lift.stop_now();
     update_hold();
   }
 }
 
 void Channel::reach_block(const Block& block, size_t index, bool run_commands) {
   events_.set_block(block);
-  if (continuation_block_ && index >= *continuation_block_) continuation_reached_ = true;  // DPS-3
+  if (run_->continuation_block && index >= *run_->continuation_block) run_->continuation_reached = true;  // DPS-3
   if (!run_commands) return;
-  lift_->reach_block(index, hli_.override.state_r);
+  run_->lift.reach_block(index, hli_.override.state_r);
   update_hold();
   if (actions_.queue(block)) update_hold();
-  if (block.distance_prog_start) distance_.apply(*block.distance_prog_start);
+  if (block.distance_prog_start) run_->distance.apply(*block.distance_prog_start);
   if (block.programmed_stop && programmed_stop_.begin(*block.programmed_stop)) update_hold();  // M00 / M01
   if (block.insert_cmd) {  // ISC-8: set where the path stands, at this line
-    insert_->program_command(*block.insert_cmd);
+    run_->insert.program_command(*block.insert_cmd);
     update_hold();
   }
 }
@@ -356,23 +358,23 @@ void Channel::write_state() {
   hli_.block_nr_r = events_.block_nr();
   hli_.block_count_r = events_.block_count();
   hli_.last_error_id = events_.last_error_id();
-  hli_.backward_motion.state_r = path_->direction() == TravelDirection::backward;
+  hli_.backward_motion.state_r = run_->path.direction() == TravelDirection::backward;
   ddtg_.write(hli_);
-  insert_->write(hli_, *path_);
+  run_->insert.write(hli_, run_->path);
   for (size_t i = 0; i < machine_.axes.size(); ++i)  // a modulo axis within its range (KRN-7)
     hli_.axis_position_r[i] = std::llround(machine_.axes[i].in_modulo_range(setpoints()[i].position) * hli_units_per_mm);
   for (size_t i = 0; i < machine_.axes.size(); ++i) {  // LIFT-7
-    hli_.lift_active[i] = lift_->active(i);
-    hli_.lift_suppressed[i] = lift_->suppressed(i);
+    hli_.lift_active[i] = run_->lift.active(i);
+    hli_.lift_suppressed[i] = run_->lift.suppressed(i);
   }
   hli_.program_start.state_r = hli_.channel_state == ChannelState::active;
   // DPS-3: repositioned once on the continuation's block with the collected M functions acknowledged.
-  if (continuation_reached_ && !actions_.waiting()) {
+  if (run_->continuation_reached && !actions_.waiting()) {
     hli_.block_search.state_r.state = block_search_state::continued;
-    continuation_block_.reset();
-    continuation_reached_ = false;
+    run_->continuation_block.reset();
+    run_->continuation_reached = false;
   }
-  hli_.stop_conditions_r = hold().stop_conditions() | programmed_stop_.stop_conditions() | insert_->stop_conditions();
+  hli_.stop_conditions_r = hold().stop_conditions() | programmed_stop_.stop_conditions() | run_->insert.stop_conditions();
   if (hli_.override.state_r == 0) hli_.stop_conditions_r |= stop_condition::override_zero;
   if (hli_.channel_state != ChannelState::active) hli_.stop_conditions_r |= stop_condition::ipo_input_empty;
 }

@@ -15,6 +15,7 @@
 //   path_hold              why the path holds: velocity factor, stop_conditions_r
 //                          (channel_holds.cpp: each unit's reason; what holds program end)
 //   path_interpolator      look-ahead, plan, block cursors, travel direction
+//   program_run            the units of one program run, made anew at a reset
 //   block search (cnc/search)  DPS-3: a program start at a block number and distance
 //   reset                  abort the program where the path stands: READY again
 #include <cstdint>
@@ -38,6 +39,7 @@
 #include "path_hold.hpp"
 #include "path_interpolator.hpp"
 #include "block_search.hpp"
+#include "program_run.hpp"
 #include "program_stream.hpp"
 #include "programmed_stop.hpp"
 #include "rising_edge.hpp"
@@ -66,10 +68,10 @@ class Channel : private PathObserver {
   // Events raised since the last call.
   std::vector<Event> take_events() { return events_.take(); }
   // The blocks it holds now (issue 17: bounded, whatever the program's length).
-  size_t blocks_held() const { return path_->blocks().held() + (program_ ? program_->blocks_held() : 0); }
+  size_t blocks_held() const { return run_->path.blocks().held() + (run_->program ? run_->program->blocks_held() : 0); }
   // What does not hold of the interpolator's state ("" if all does): the
   // channel fuzz asks every cycle.
-  std::string check_invariants() const { return path_ ? path_->check_invariants() : ""; }
+  std::string check_invariants() const { return run_ ? run_->path.check_invariants() : ""; }
   // Program end or error reached: the channel commands no more motion.
   bool finished() const;
 
@@ -91,6 +93,9 @@ class Channel : private PathObserver {
   // A new program run's units, at where the axes stand.
   void begin_program_run();
   void run_path(const HliControl& control, double t);
+  // The path stands (`standing`: at the cycle's interpolation): the units
+  // that act there, in their order of priority.
+  void on_standstill(double t, bool standing);
   void interpolate(double t);
   void start_short_cut(double t);
   void change_direction(double t, bool standing);
@@ -113,13 +118,13 @@ class Channel : private PathObserver {
   // Why the path holds now; its velocity factor goes to the interpolator.
   PathHold hold() const;
   void update_hold();
-  bool moving() const { return hli_.channel_state == ChannelState::active || error_stop_.stopping(); }
+  bool moving() const { return hli_.channel_state == ChannelState::active || run_->error_stop.stopping(); }
 
   // PathObserver
   void reach_block(const Block& block, size_t index, bool run_commands) override;
   void travelled(double covered_distance) override {
-    distance_.count(covered_distance);
-    lift_->count(covered_distance);
+    run_->distance.count(covered_distance);
+    run_->lift.count(covered_distance);
   }
   void finish_block(size_t index) override { ddtg_.finish_block(index); }
 
@@ -129,29 +134,18 @@ class Channel : private PathObserver {
   // them (they outlast a program, as a real CNC's zero offset data).
   std::vector<std::vector<double>> zero_offsets_;
   ZeroOffsetCommand last_zero_offset_write_;
-  std::unique_ptr<ProgramStream> program_;  // the run's blocks; the interpolator reads them
   HliState hli_;
   ChannelEvents events_;
-  // Per program run: made anew at a reset (they refer to machine_).
-  std::optional<PathInterpolator> path_;
+  // Made anew at a reset (it refers to machine_).
+  std::optional<ProgramRun> run_;
   FeedControl feed_;
   DeleteDistanceToGo ddtg_;
   BackwardMotion backward_;
   SynchronousActions actions_;
-  DistanceFromProgramStart distance_;
-  DriveErrorStop error_stop_;
-  std::optional<InsertStop> insert_;
   ProgrammedStop programmed_stop_;
-  std::optional<Lift> lift_;
   std::vector<AxisSetpoint> setpoints_;
-  bool backward_refused_ = false;  // warned once that a lift range forbids backward motion
   RisingEdge program_start_;
   RisingEdge reset_;
-  // DPS-3: the collected M functions and the approach come first; the
-  // block with this index is the continuation's.
-  std::optional<size_t> continuation_block_;
-  bool continuation_reached_ = false;
-  bool decode_failed_ = false;
   int64_t start_cycle_ = 0;
   int64_t cycle_ = 0;
 };

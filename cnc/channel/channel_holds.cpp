@@ -11,23 +11,23 @@ PathHold Channel::hold() const {
   hold.set(HoldReason::channel_error, hli_.channel_state == ChannelState::error);
   hold.set(HoldReason::m_function_ack, actions_.waiting_for_acknowledgement());
   hold.set(HoldReason::dwell, actions_.in_dwell());
-  hold.set(HoldReason::direction_change, backward_.change_pending(path_->direction()));
-  hold.set(HoldReason::insert_command, insert_->pending() && hli_.channel_state == ChannelState::active);
+  hold.set(HoldReason::direction_change, backward_.change_pending(run_->path.direction()));
+  hold.set(HoldReason::insert_command, run_->insert.pending() && hli_.channel_state == ChannelState::active);
   hold.set(HoldReason::programmed_stop, programmed_stop_.stopped());
-  hold.set(HoldReason::lift_positioning, lift_->holds_path());
+  hold.set(HoldReason::lift_positioning, run_->lift.holds_path());
   return hold;
 }
 
 void Channel::update_hold() {
-  path_->set_velocity_factor(hold().velocity_factor(lift_->override_cap(hli_.override.state_r)));  // LIFT-8
+  run_->path.set_velocity_factor(hold().velocity_factor(run_->lift.override_cap(hli_.override.state_r)));  // LIFT-8
 }
 
 // The units that hold the program's end while all its blocks have run.
 bool Channel::holds_program_end() const {
   return actions_.waiting()            // its last M functions and dwells
          || programmed_stop_.stopped()  // M00 / M01 (ISC-5)
-         || insert_->at_mark() || insert_->pending()  // an insert stop mark at the end (ISC-3 .. ISC-7)
-         || lift_->running();            // a lift range runs or waits to (LIFT-1)
+         || run_->insert.at_mark() || run_->insert.pending()  // an insert stop mark at the end (ISC-3 .. ISC-7)
+         || run_->lift.running();            // a lift range runs or waits to (LIFT-1)
 }
 
 }  // namespace hil::cnc
