@@ -3,7 +3,10 @@
 # Debian packages as on a machine and builds into build/; ../shared (the
 # specification texts) is not needed to build or run.
 #   docker build -t hil-rig .
-#   docker run --rm --cap-add NET_ADMIN hil-rig sh -c 'scripts/in_netns.sh build/bin/hil run scenarios/ --in-process --jobs 2'
+#   docker run --rm --network none --cap-add NET_ADMIN hil-rig \
+#     scripts/in_netns.sh --here build/bin/hil run scenarios/demo.yaml
+# scripts/container_check.sh builds and runs it from a clean clone (no
+# registry needed: the base comes from debootstrap) and prints the times.
 FROM debian:bookworm
 ENV DEBIAN_FRONTEND=noninteractive
 WORKDIR /hil
