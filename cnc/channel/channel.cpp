@@ -170,6 +170,7 @@ void Channel::take_stream_events() {
 
 void Channel::run_path(const HliControl& control, double t) {
   if (actions_.run(control, t, hli_)) update_hold();
+  run_->distance.actions_done(actions_.done());  // DPS-2: a #DISTANCE PROG START after them
   // M<n> of an insert stop mark acknowledged (ISC-5).
   if (run_->insert.at_mark() && !programmed_stop_.stopped() && !actions_.waiting()) leave_insert_mark(t);
   interpolate(t);
@@ -344,8 +345,9 @@ void Channel::reach_block(const Block& block, size_t index, bool run_commands) {
   if (!run_commands) return;
   run_->lift.reach_block(index, hli_.override.state_r);
   update_hold();
+  const uint64_t actions_before = actions_.queued();  // of the blocks before this one
   if (actions_.queue(block)) update_hold();
-  if (block.distance_prog_start) run_->distance.apply(*block.distance_prog_start);
+  if (block.distance_prog_start) run_->distance.command(*block.distance_prog_start, actions_before, actions_.done());
   if (block.programmed_stop && programmed_stop_.begin(*block.programmed_stop)) update_hold();  // M00 / M01
   if (block.insert_cmd) {  // ISC-8: set where the path stands, at this line
     run_->insert.program_command(*block.insert_cmd);

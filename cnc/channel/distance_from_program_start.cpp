@@ -10,4 +10,13 @@ void DistanceFromProgramStart::apply(DistanceProgStart command) {
   }
 }
 
+void DistanceFromProgramStart::command(DistanceProgStart command, uint64_t after, uint64_t done) {
+  if (waiting_.empty() && done >= after) apply(command);
+  else waiting_.emplace_back(after, command);
+}
+
+void DistanceFromProgramStart::actions_done(uint64_t done) {
+  for (; !waiting_.empty() && waiting_.front().first <= done; waiting_.pop_front()) apply(waiting_.front().second);
+}
+
 }  // namespace hil::cnc

@@ -58,6 +58,7 @@ bool SynchronousActions::run(const HliControl& control, double t, HliState& hli)
       dwell_end_ = -1;
     }
     actions_.pop_front();
+    ++done_;
   }
   return true;
 }

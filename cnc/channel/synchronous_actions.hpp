@@ -8,6 +8,7 @@
 // rising edge of command_w while enable_w).
 // Writes: <m|h|s|t>_function_request_r and their numbers / values,
 // m_function_add_nr_r, tool_offset_nr_r.
+#include <cstdint>
 #include <deque>
 
 #include "block.hpp"
@@ -28,8 +29,14 @@ class SynchronousActions {
   bool waiting() const { return !actions_.empty(); }
   bool waiting_for_acknowledgement() const { return waiting() && actions_.front().address != dwell; }
   bool in_dwell() const { return waiting() && actions_.front().address == dwell; }
+  // How many actions are done since the channel was made (a reset counts
+  // those it drops), and how many were queued: what comes after the n-th
+  // in program order waits until done() reaches n (DPS-2).
+  uint64_t done() const { return done_; }
+  uint64_t queued() const { return done_ + actions_.size(); }
   // A reset: nothing left to output or wait for; the acknowledgements' edges stay.
   void abort() {
+    done_ += actions_.size();
     actions_.clear();
     dwell_end_ = -1;
   }
@@ -48,6 +55,7 @@ class SynchronousActions {
   static void output(const Action& action, HliState& hli);
   static bool& request(char address, HliState& hli);
   std::deque<Action> actions_;
+  uint64_t done_ = 0;
   double dwell_end_ = -1;  // s after program start, while the front action is a dwell
   RisingEdge m_ack_, h_ack_, s_ack_, t_ack_;
 };

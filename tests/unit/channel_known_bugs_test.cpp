@@ -495,14 +495,14 @@ TEST_CASE("DPS-1 KRN-6 dist_prog_start on contouring curves at arcs of 0.13 mm r
 
 TEST_CASE("DPS-2 DPS-3 a search continued before #DISTANCE PROG START CLEAR and a dwell, with no motion left: "
           "dist_prog_start starts at the continuation's distance",
-          "[.][known-bug][channel]") {
-  // V (open, docs/FUZZ.md): commands 15009636. A reset at the program's
-  // end, then a type 4 search at what was read (block N160, 0 mm after N140
+          "[channel][fuzz]") {
+  // V (docs/FUZZ.md): commands 15009636. A reset at the program's end,
+  // then a type 4 search at what was read (block N160, 0 mm after N140
   // #DISTANCE PROG START CLEAR) moved back to N120's start with its warning
   // (11.59 mm there); the program goes on N120 #TIME 0.231 / N130 M18 /
-  // N140 CLEAR / N160 M30 without motion, and dist_prog_start shows 0 in the
-  // search's first cycle, not the continuation's 11.59 mm: the blocks
-  // without motion after the last motion seem to run at once, before the
-  // dwell. Found after this session's last CI run; not yet traced.
+  // N140 CLEAR / N160 M30 without motion. The interpolator reaches the
+  // blocks without motion at once; the CLEAR acted then, before the dwell
+  // and M18 it follows, and dist_prog_start showed 0 in the search's first
+  // cycle instead of the continuation's 11.59 mm. It acts in program order now.
   check_seeds(fuzz::ProgramKind::commands, {15009636});
 }

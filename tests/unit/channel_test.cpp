@@ -134,3 +134,29 @@ TEST_CASE("KRN-4 stop_conditions_r: PLC_ACKNOWLEDGE and WAIT_TECHNO_ACK while an
   CHECK(moving_cycles > 100);
   CHECK(channel.hli().channel_state == ChannelState::program_end);
 }
+
+TEST_CASE("DPS-2 #DISTANCE PROG START CLEAR after an M function and a dwell acts once they are done", "[channel]") {
+  // In program order: while N20's M function waits for its acknowledgement
+  // and N30 dwells, dist_prog_start still shows N10's 10 mm; N40 clears it
+  // after them (fuzz seed 15009636: the CLEAR acted when the interpolator
+  // reached it, before the dwell, and showed 0 through it).
+  Channel channel(test::xyz_machine(),
+                  "N10 G1 X10 F3000\nN20 M48\nN30 #TIME 0.2\nN40 #DISTANCE PROG START CLEAR\nN50 X20\nM30\n");
+  int64_t waiting_cycles = 0, cleared_cycles = 0;
+  run_program(channel, nullptr, [&](int64_t k, const HliState& s, HliControl& c) {
+    c.m_function_ack.enable_w = true;
+    c.m_function_ack.command_w = s.m_function_request_r && k % 50 == 0;
+    const bool waits = s.m_function_request_r || (s.stop_conditions_r & stop_condition::delay_time) != 0;
+    if (waits) {
+      CHECK(s.dist_prog_start == Approx(10 * hli_units_per_mm));
+      ++waiting_cycles;
+    } else if (s.block_nr_r == 50 && s.path_velocity > 0) {
+      CHECK(s.dist_prog_start < 10 * hli_units_per_mm);
+      ++cleared_cycles;
+    }
+  });
+  CHECK(waiting_cycles > 200);
+  CHECK(cleared_cycles > 100);
+  CHECK(channel.hli().dist_prog_start == Approx(10 * hli_units_per_mm));  // N50 alone
+  CHECK(channel.hli().channel_state == ChannelState::program_end);
+}
