@@ -63,11 +63,24 @@ size_t last_motion(const std::vector<Block>& blocks, const LiftRange& range) {
 // suppresses it as well, and so does, out of a range, a POS other than the
 // height the range started at.
 void suppress_contouring_at_ends(std::vector<Block>& blocks, const std::vector<LiftRange>& ranges,
-                                 const Block* next_motion, LiftMethod method) {
+                                 const Block* next_motion, const MachineConfig& machine) {
   auto in_a_range = [&](size_t k) {
     return std::any_of(ranges.begin(), ranges.end(), [k](const LiftRange& r) { return r.contains(k); });
   };
-  auto moves = [](const Block& block, size_t axis) { return block.motion.start[axis] != block.motion.end[axis]; };
+  // Anywhere along the motion, not only from its start to its end: an arc
+  // moves the axes of its plane even where it ends where it began (a full
+  // circle in G19 before LIFT_START moved Z on the curve into the range,
+  // which the lift then took from the programmed height: 70 mm/s^2 in a
+  // cycle, fuzz lift seed 19001122).
+  auto moves = [&machine](const Block& block, size_t axis) {
+    const Motion& m = block.motion;
+    if (m.type == MotionType::arc_cw || m.type == MotionType::arc_ccw) {
+      const int first = m.plane[0] >= 0 ? m.plane[0] : machine.axis_index("X");
+      const int second = m.plane[1] >= 0 ? m.plane[1] : machine.axis_index("Y");
+      if (static_cast<int>(axis) == first || static_cast<int>(axis) == second) return true;
+    }
+    return m.start[axis] != m.end[axis];
+  };
   auto suppress = [](Block& block) {
     if (block.transition == BlockTransition::contour) block.transition = BlockTransition::standard;
   };
@@ -75,7 +88,7 @@ void suppress_contouring_at_ends(std::vector<Block>& blocks, const std::vector<L
   // curve counts at another rate per length than the line it joins: the
   // lift axis' velocity would step where the curve ends. Lifting keeps the
   // 1st case at both ends.
-  const bool always = method == LiftMethod::path_based;
+  const bool always = machine.lift_method == LiftMethod::path_based;
   for (const LiftRange& range : ranges) {
     const auto axis = static_cast<size_t>(range.command.axis);
     // A range without path motion: the path stops before it and waits
@@ -200,7 +213,7 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
       block.motion.path_j_cap = std::min(block.motion.path_j_cap, j_cap);
     }
   }
-  suppress_contouring_at_ends(blocks, ranges, next_motion, machine.lift_method);
+  suppress_contouring_at_ends(blocks, ranges, next_motion, machine);
   return ranges;
 }
 

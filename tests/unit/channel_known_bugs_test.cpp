@@ -479,6 +479,16 @@ TEST_CASE("KRN-5 DPS-1 a turn on an arc whose end radius is off its start radius
   check_seeds(fuzz::ProgramKind::arcs, {15000914});
 }
 
+TEST_CASE("LIFT-2 LIFT-3 KRN-6 a full circle in the lift axis' plane before LIFT_START is not contoured into the range",
+          "[channel][lift][fuzz]") {
+  // X (docs/FUZZ.md): N220 G19 G03 X.. J.. K.. (Y and Z end where they
+  // began: a helix of one turn) / N230 Z[LIFT_START DOWN ..] / N240 G00 ..
+  // under G261: the block before the range was taken as not moving Z, the
+  // curve into N240 still moved it, and the lift took Z from the programmed
+  // height: 0.07 mm in a cycle, 70,142 mm/s^2 for 3,000 (lift 19001122).
+  check_seeds(fuzz::ProgramKind::lift, {19001122});
+}
+
 TEST_CASE("DPS-1 KRN-6 dist_prog_start on contouring curves at arcs of 0.13 mm radius and less grows with the chord",
           "[.][known-bug][channel][contour]") {
   // Open (docs/FUZZ.md M and U): a curve counts the programmed distance of

@@ -287,6 +287,23 @@ TEST_CASE("LIFT-2 LIFT-3 KRN-6 contouring into and out of an Advanced Lifting ra
     CHECK(transitions(b, LiftMethod::path_based) == "ssssC");
     CHECK(transitions(b, LiftMethod::time_based) == "CCCsC");
   }
+  SECTION("1st case: a full circle in the lift axis' plane moves it, though it ends where it began") {
+    // Fuzz lift seed 19001122 (docs/FUZZ.md X): a G19 circle before
+    // LIFT_START was contoured into the range; Z stepped 0.07 mm in a cycle.
+    std::vector<Block> b = blocks;
+    Motion& circle = b[0].motion;
+    circle.type = MotionType::arc_ccw;
+    circle.plane = {1, 2};  // G19: Y Z
+    circle.start = {0, 0, 10};
+    circle.end = {10, 0, 10};  // X linear: a helix, Y and Z back where they began
+    circle.center = {0, 5};
+    CHECK(transitions(b, LiftMethod::time_based) == "sCCCC");
+    std::vector<Block> after = blocks;
+    after[4].motion = circle;
+    after[4].motion.start = after[4].motion.end = {50, 5, 10};
+    after[4].motion.end[0] = 60;
+    CHECK(transitions(after, LiftMethod::time_based) == "CCCsC");
+  }
   SECTION("the block after the range not yet among the blocks (streamed): the next motion block decides") {
     std::vector<Block> b(blocks.begin(), blocks.begin() + 4);
     Block after = blocks[4];
