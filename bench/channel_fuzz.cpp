@@ -155,6 +155,7 @@ int main(int argc, char** argv) {
                  "compare each run's outputs with its golden trace DIR/<kind>/seed_<seed>.trace.xz within 1e-9 mm "
                  "(in this process; docs/GOLDEN.md)");
   app.add_flag("--write-golden", write_golden, "write the golden traces instead (with --golden)")->needs("--golden");
+  app.footer("Documentation: docs/FUZZ.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   if (kind_name != "all") {
     const auto kind = parse_program_kind(kind_name);

@@ -127,6 +127,7 @@ int main(int argc, char** argv) {
   app.add_option("--csv", csv_file, "write the commanded path as CSV");
   app.add_option("--only", only_name, "circle or contour")->check(CLI::IsMember({"circle", "contour"}));
   app.add_option("--decimals", decimals, "decimals of the chord end points")->check(CLI::Range(0, 15))->capture_default_str();
+  app.footer("Documentation: docs/PERFORMANCE.md and docs/CONTOURING.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   const char* csv_path = csv_file.empty() ? nullptr : csv_file.c_str();
   const char* only = only_name.empty() ? nullptr : only_name.c_str();

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   app.add_option("--dir", dir, "folder of .nc programs")->capture_default_str();
   app.add_option("--machine", machine_file, "machine file")->capture_default_str();
   app.add_option("--repeat", repeat, "decodes per program; the best is printed")->check(CLI::Range(1, 100000));
+  app.footer("Documentation: docs/DIALECT.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   const hil::MachineConfig machine = hil::parse_machine_config(YAML::LoadFile(machine_file));
   std::vector<fs::path> files;

@@ -35,6 +35,7 @@ Sample sample(const std::string& channel, Message m) {
 
 int main(int argc, char** argv) {
   CLI::App app{"mac_bench: the time to sign and verify a rig message's MAC, per message type (RIG-12)"};
+  app.footer("Documentation: docs/RELIABILITY.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   const lcm_support::RunSecret secret = lcm_support::RunSecret::generate();
   hil::axis_state_t state{};

@@ -197,6 +197,7 @@ int main(int argc, char** argv) {
   app.add_flag("--profiles-only", profiles_only, "the profiles only");
   app.add_option("--blocks", only, "decode + plan of this many blocks only")->check(CLI::PositiveNumber);
   app.add_option("--dir", dir, "folder of the temporary NC file")->capture_default_str();
+  app.footer("Documentation: docs/PERFORMANCE.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   if (profiles_only) {
     profile_times(bench::CallTimer());

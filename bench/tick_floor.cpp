@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   app.add_option("seconds", seconds, "how long")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("period_us", period_us, "tick period")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("cpu", cpu, "pinned to this CPU (-1: anywhere)")->capture_default_str();
+  app.footer("Documentation: docs/PERFORMANCE.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   if (cpu >= 0) {
     cpu_set_t one;

@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
                "write the mutants into the work folder (mutant_<seed>.lcmlog), read none: to try other builds on them");
   bool verbose = false;
   app.add_flag("--verbose,-v", verbose, "a line per mutant: seed, base, mutation, verdict, time");
+  app.footer("Documentation: docs/FUZZ.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   options.rerun = !no_rerun;
 

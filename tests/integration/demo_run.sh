@@ -24,6 +24,13 @@ readme="$HIL_SOURCE/README.md"
 cycles=$(sed -n 's/^log: .* messages, \([0-9]*\) cycles = .*/\1/p' "$WORK/run/report.txt" | head -1)
 grep -q "^log: runs/demo_xyz-.../run.lcmlog ([0-9]* messages, $cycles cycles = " "$readme" ||
   fail "README's demo report does not say $cycles cycles"
+# The excerpt's axis X rows, verbatim (the message count and the wall time
+# vary from run to run; these do not).
+sed -n '/^axis X  /,/^\.\.\.$/p' "$readme" | grep '^  ' > "$WORK/readme_rows"
+[ -s "$WORK/readme_rows" ] || fail "README's demo report has no axis X rows"
+while IFS= read -r row; do
+  grep -qxF "$row" "$WORK/run/report.txt" || fail "README's demo report row is not this build's: '$row'"
+done < "$WORK/readme_rows"
 expect_status 0 "$hil" rerun "$WORK/run/run.lcmlog"
 rerun=$(sed -n 's/^\(identical: [0-9]* cycles, [0-9]* messages\).*/\1/p' "$WORK/last.out")
 grep -qF "# $rerun" "$readme" || fail "README's rerun example does not say '$rerun'"

@@ -43,6 +43,14 @@ expect_output "because cnc error axis Y at nc_program line 2 (scenario file line
 expect_output "because limit violation: axis Y commanded position"
 expect_output "expectations (plc_sim): 0 passed, 3 failed of 3 verdict(s): the scenario's 1 and 2 'no unexpected error'"
 grep -n "because" last.out | tail -1 | grep -q "offline check" || fail "the consequences do not come last"
+# report.html tells the same story in the same order: the drive's error
+# first, the CNC's next, the failed expectations after them.
+python3 - one/report.html <<'PY' || fail "report.html does not put the root cause first"
+import html, re, sys
+text = html.unescape(re.sub(r"<[^>]+>", " ", open(sys.argv[1], encoding="utf-8").read()))
+places = [text.find(s) for s in ("axis_sim Y error (P-AXIS-00178)", "cnc error axis Y", "expectation")]
+assert -1 not in places and places == sorted(places), places
+PY
 
 before=$(date +%s)
 expect_status 1 "$hil" run suite --in-process --out runs --junit junit.xml
