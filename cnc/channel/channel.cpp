@@ -137,7 +137,7 @@ void Channel::start_program(const ControlUnitBlockSearch& search) {
   for (const AxisSetpoint& setpoint : setpoints_) start_position.push_back(setpoint.position);
   run_->lift.begin_program();
   run_->program = std::make_unique<ProgramStream>(nc_program_, machine_, start_position,
-                                             [this](LiftRange range) { run_->lift.add_range(std::move(range)); });
+                                                  [this](LiftRange range) { run_->lift.add_range(std::move(range)); });
   run_->program->set_block_ignore(hli_.program_block_ignore.state_r);
   run_->program->set_zero_offsets(zero_offsets_);
   hli_.block_search.state_r = BlockSearchState();
@@ -151,7 +151,8 @@ void Channel::start_program(const ControlUnitBlockSearch& search) {
   run_->backward_refused = false;
   start_cycle_ = cycle_;
   enter(ChannelState::active);
-  if (run_->insert.pending()) run_->insert.set_pending(run_->path, 0, distance_mm(), events_);  // commanded before the start (ISC-6)
+  // Commanded before the start (ISC-6).
+  if (run_->insert.pending()) run_->insert.set_pending(run_->path, 0, distance_mm(), events_);
   run_->path.go_on_from_standstill(0);
   update_hold();
   interpolate(0);
@@ -376,7 +377,8 @@ void Channel::write_state() {
     run_->continuation_block.reset();
     run_->continuation_reached = false;
   }
-  hli_.stop_conditions_r = hold().stop_conditions() | programmed_stop_.stop_conditions() | run_->insert.stop_conditions();
+  hli_.stop_conditions_r =
+      hold().stop_conditions() | programmed_stop_.stop_conditions() | run_->insert.stop_conditions();
   if (hli_.override.state_r == 0) hli_.stop_conditions_r |= stop_condition::override_zero;
   if (hli_.channel_state != ChannelState::active) hli_.stop_conditions_r |= stop_condition::ipo_input_empty;
 }

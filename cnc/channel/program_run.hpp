@@ -19,7 +19,8 @@
 namespace hil::cnc {
 
 struct ProgramRun {
-  ProgramRun(const MachineConfig& machine, PathObserver& observer) : path(machine, observer), insert(machine), lift(machine) {}
+  ProgramRun(const MachineConfig& machine, PathObserver& observer)
+      : path(machine, observer), insert(machine), lift(machine) {}
   ProgramRun(const ProgramRun&) = delete;  // the units refer to the machine
   ProgramRun& operator=(const ProgramRun&) = delete;
 

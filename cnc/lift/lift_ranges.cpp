@@ -70,14 +70,13 @@ void suppress_contouring_at_ends(std::vector<Block>& blocks, const std::vector<L
   // Anywhere along the motion, not only from its start to its end: an arc
   // moves the axes of its plane even where it ends where it began (a full
   // circle in G19 before LIFT_START moved Z on the curve into the range,
-  // which the lift then took from the programmed height: 70 mm/s^2 in a
-  // cycle, fuzz lift seed 19001122).
+  // which the lift then took from the programmed height: 70,142 mm/s^2 in
+  // a cycle, fuzz lift seed 19001122).
   auto moves = [&machine](const Block& block, size_t axis) {
     const Motion& m = block.motion;
     if (m.type == MotionType::arc_cw || m.type == MotionType::arc_ccw) {
-      const int first = m.plane[0] >= 0 ? m.plane[0] : machine.axis_index("X");
-      const int second = m.plane[1] >= 0 ? m.plane[1] : machine.axis_index("Y");
-      if (static_cast<int>(axis) == first || static_cast<int>(axis) == second) return true;
+      const std::array<int, 2> plane = arc_plane_axes(m, machine);
+      if (static_cast<int>(axis) == plane[0] || static_cast<int>(axis) == plane[1]) return true;
     }
     return m.start[axis] != m.end[axis];
   };

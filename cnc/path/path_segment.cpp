@@ -19,6 +19,11 @@ bool is_main_axis(const std::string& name) {
 }
 }  // namespace
 
+std::array<int, 2> arc_plane_axes(const Motion& motion, const MachineConfig& machine) {
+  return {motion.plane[0] >= 0 ? motion.plane[0] : machine.axis_index("X"),
+          motion.plane[1] >= 0 ? motion.plane[1] : machine.axis_index("Y")};
+}
+
 PathSegment::PathSegment(const Motion& m, const MachineConfig& machine)
     : start_(m.start), end_(m.end), unit_(m.start.size(), 0.0) {
   arc_ = m.type == MotionType::arc_cw || m.type == MotionType::arc_ccw;
@@ -141,8 +146,9 @@ void PathSegment::set_line_limits(const Motion& m, const MachineConfig& machine)
 // Each term gets a fixed part of the axis limit: the centripetal terms half
 // the acceleration and a third of the jerk, which bounds v, a_t and j_t.
 void PathSegment::set_arc_limits(const Motion& m, const MachineConfig& machine) {
-  ix_ = m.plane[0] >= 0 ? m.plane[0] : machine.axis_index("X");
-  iy_ = m.plane[1] >= 0 ? m.plane[1] : machine.axis_index("Y");
+  const std::array<int, 2> plane = arc_plane_axes(m, machine);
+  ix_ = plane[0];
+  iy_ = plane[1];
   cx_ = m.center[0];
   cy_ = m.center[1];
   radius_ = std::hypot(m.start[at(ix_)] - cx_, m.start[at(iy_)] - cy_);

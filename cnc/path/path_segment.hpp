@@ -3,6 +3,7 @@
 // its path length s, and the path limits (velocity, acceleration, jerk)
 // under which every axis stays within its own limits (KRN-3).
 // Path positions s run from 0 at the start to length() at the end.
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,9 @@
 #include "slope.hpp"
 
 namespace hil::cnc {
+
+// The machine axes of an arc's plane (Motion::plane; -1: X and Y, G17).
+std::array<int, 2> arc_plane_axes(const Motion& motion, const MachineConfig& machine);
 
 class PathSegment {
  public:
