@@ -34,16 +34,14 @@ StopPoint PathInterpolator::leave_front(double t) {
     stop.curve = front.segment.joint();
     stop.curve_s = front.segment.curve_position(stop.s);
     stop.curve_reversed = front.segment.reversed();
-  } else if (const std::optional<CurvePart>& part = pushed_.front().chord_of) {
+  } else if (const MotionPiece& piece = pushed_.front(); piece.along_chord) {
     // On the chord of a curve's tiny rest: on the curve, off the block's
     // motion. Taken as a point off the motion, the turn ran a line from
     // there to the block's end that counts less than the curve and the
     // block left (fuzz contour seed 12004916: 6.4e-5 mm, DPS-1).
-    const double fraction = stop.front_length > 0 ? stop.s / stop.front_length : 0.0;
-    stop.curve = part->joint;
-    stop.curve_s = part->reversed ? part->to - (part->to - part->from) * fraction
-                                  : part->from + (part->to - part->from) * fraction;
-    stop.curve_reversed = part->reversed;
+    stop.curve = piece.curve->joint;
+    stop.curve_s = piece.curve->at(stop.front_length > 0 ? stop.s / stop.front_length : 0.0);
+    stop.curve_reversed = piece.curve->reversed;
   }
   double covered = 0;
   if (stop.front_length > 0) {
@@ -63,7 +61,12 @@ bool PathInterpolator::push_short_cut(size_t target, const Motion& cut) {
   PathSegment segment(cut, machine_);
   if (!(segment.length() > 0)) return false;
   // Not smoothed, nor the transition after it (DDTG-2).
-  push({target, cut, 0.0, segment.covered_distance(), blocks_[target].slope, std::nullopt, std::nullopt, false});
+  MotionPiece piece;
+  piece.block = target;
+  piece.motion = cut;
+  piece.covered = segment.covered_distance();
+  piece.slope = blocks_[target].slope;
+  push(std::move(piece));
   return true;
 }
 
@@ -140,15 +143,15 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
   Stretch st = look_ahead_.stretch(state.v);
   for (size_t through = 1;; ++through) {
     double length = st.length, v_end = st.v_end;
-    if (stop_at_) {
+    if (stop_.at()) {
       // Where the path stands if it brakes now, on the front block's scale.
       const double braked = velocity_change(state.v, state.a, 0, st.lim, st.slope).end(state).p;
-      stop_at_ = std::max(*stop_at_, travelled_before_front_ + braked);
+      stop_.not_before(travelled_before_front_ + braked);
       // A stop on the stretch's end but for round-off is on it: interpolate()
       // holds the path there (on the same tolerance), so the plan must end
       // at rest there (fuzz seed 870: 6.7 mm/s to 0 in one cycle).
-      const double to_stop = *stop_at_ - travelled_before_front_;
-      if (to_stop <= length + tolerance::length_at(*stop_at_)) {
+      const double to_stop = *stop_.at() - travelled_before_front_;
+      if (to_stop <= length + tolerance::length_at(*stop_.at())) {
         length = std::min(length, to_stop);
         v_end = 0;
       }
@@ -189,7 +192,7 @@ void PathInterpolator::replan(double t) {
 std::vector<Motion> PathInterpolator::path_ahead() const {
   std::vector<Motion> ahead;
   bool front = true;
-  for (const PushedMotion& pushed : pushed_) {
+  for (const MotionPiece& pushed : pushed_) {
     const Motion& motion = pushed.motion;
     if (front) {
       // The rest of the front: nothing at its end point (an arc's rest from
@@ -222,16 +225,12 @@ std::vector<Motion> PathInterpolator::path_ahead() const {
 }
 
 void PathInterpolator::stop_after(double t, double distance, bool rebuild) {
-  placed_stop_.reset();
   if (!standing(t)) {
-    stop_at_ = travelled_before_front_ + path_state_at(t).p + std::max(distance, 0.0);
+    stop_.ask_at_length(travelled_before_front_ + path_state_at(t).p + std::max(distance, 0.0));
     replan_ = true;
     return;
   }
-  stop_at_.reset();
-  stop_covered_from_ = covered_before_front_ + std::abs(front_covered_);
-  if (look_ahead_.empty()) stop_covered_from_ = covered_before_front_;
-  stop_covered_ = stop_covered_from_ + std::max(distance, 0.0);
+  stop_.ask_covered(covered_before_front_ + (look_ahead_.empty() ? 0.0 : std::abs(front_covered_)), distance);
   if (!rebuild) return;
   if (!look_ahead_.empty()) restart_here(t);
   else if (!blocks_.empty()) refill();
@@ -239,16 +238,14 @@ void PathInterpolator::stop_after(double t, double distance, bool rebuild) {
 }
 
 void PathInterpolator::release_stop() {
-  stop_at_.reset();
-  stop_covered_.reset();
-  placed_stop_.reset();
+  stop_.release();
   replan_ = true;
 }
 
 bool PathInterpolator::at_stop(double t) const {
-  if (!stop_at_ || !standing(t)) return false;
+  if (!stop_.at() || !standing(t)) return false;
   const double p = travelled_before_front_ + (look_ahead_.empty() ? 0.0 : path_state_at(t).p);
-  return std::abs(p - *stop_at_) <= tolerance::length_at(p);
+  return std::abs(p - *stop_.at()) <= tolerance::length_at(p);
 }
 
 void PathInterpolator::finish_front() {
@@ -280,15 +277,9 @@ void PathInterpolator::run_blocks_without_motion(size_t up_to) {
 }
 
 void PathInterpolator::forget_history() {
-  if (stored_blocks_ == past_program_end) return;  // load(vector): all kept
-  const size_t begun = std::min(cursors_.begun, blocks_.read_end());
-  for (; history_counted_ < begun; ++history_counted_)
-    if (history_counted_ >= blocks_.first_kept() && blocks_[history_counted_].has_motion) ++history_motion_;
-  while (history_motion_ > stored_blocks_ && history_start_ < history_counted_) {
-    if (history_start_ >= blocks_.first_kept() && blocks_[history_start_].has_motion) --history_motion_;
-    ++history_start_;
-  }
-  size_t keep = std::min({history_start_, cursors_.next_to_run, cursors_.last_finished, cursors_.next_to_look_ahead});
+  if (stored_contour_.keeps_all()) return;
+  const size_t stored_from = stored_contour_.first_block(blocks_, std::min(cursors_.begun, blocks_.read_end()));
+  size_t keep = std::min({stored_from, cursors_.next_to_run, cursors_.last_finished, cursors_.next_to_look_ahead});
   if (direction_ == TravelDirection::backward) keep = std::min({keep, cursors_.lowest_stored, cursors_.next_backward});
   if (!pushed_.empty()) keep = std::min(keep, pushed_.front().block);
   if (!look_ahead_.empty()) keep = std::min(keep, look_ahead_.front().block_index);
@@ -307,7 +298,7 @@ PathProgress PathInterpolator::interpolate(double t) {
     const bool plan_ended = since_plan_start(t) >= plan_.duration();
     if (path.p < length && !(plan_ended && path.p >= length - tolerance::length_at(length))) break;
     // A stop at the block end: the path stands on the end, in the block.
-    if (plan_ended && stop_at_ && std::abs(travelled_before_front_ + length - *stop_at_) <= tolerance::length_at(*stop_at_))
+    if (plan_ended && stop_.at() && std::abs(travelled_before_front_ + length - *stop_.at()) <= tolerance::length_at(*stop_.at()))
       break;
     const AxisValues end_point = look_ahead_.front().segment.end();
     finish_front();

@@ -15,10 +15,13 @@
 #include "block_source.hpp"
 #include "block_window.hpp"
 #include "look_ahead.hpp"
+#include "motion_piece.hpp"
 #include "machine_config.hpp"
 #include "motion_profile.hpp"
+#include "path_stop.hpp"
 #include "position_profile.hpp"
 #include "ring_queue.hpp"
+#include "stored_contour.hpp"
 
 namespace hil::cnc {
 
@@ -85,12 +88,12 @@ class PathInterpolator {
   // behind the furthest one begun, for backward motion (KRN-5).
   void load(BlockSource& source, size_t stored_blocks) {
     blocks_ = BlockWindow(source);
-    stored_blocks_ = stored_blocks;
+    stored_contour_ = StoredContour(stored_blocks);
   }
   // All at once (tests), all kept.
   void load(std::vector<Block> blocks) {
     blocks_ = BlockWindow(std::move(blocks));
-    stored_blocks_ = past_program_end;
+    stored_contour_ = StoredContour();
   }
   const BlockWindow& blocks() const { return blocks_; }
   // Nothing more is read from the program: it ends after the blocks read.
@@ -181,13 +184,8 @@ class PathInterpolator {
   static constexpr size_t path_ahead_blocks = 100000;
   // The path stands at the stop asked for.
   bool at_stop(double t) const;
-  // Where the stop lies once the look-ahead has reached it, and how much of
-  // the asked-for distance lies before it (less if it was moved to the end).
-  struct PlacedStop {
-    std::vector<double> position;
-    double covered = 0;  // from where stop_after() was called
-  };
-  const std::optional<PlacedStop>& placed_stop() const { return placed_stop_; }
+  // Where the stop lies once the look-ahead has reached it.
+  const std::optional<PlacedStop>& placed_stop() const { return stop_.placed(); }
 
   // A motion block whose geometry is not finite (a radius of 1e308): the
   // path stops at the end of the block before it, as at a decode error.
@@ -200,47 +198,21 @@ class PathInterpolator {
  private:
   // What enters the look-ahead: look_ahead_filling.cpp.
   void refill();
-  // [from, to] of a contouring curve, run from `to` to `from` if reversed.
-  struct CurvePart {
-    std::shared_ptr<const ContourJoint> joint;
-    double from = 0, to = 0;
-    bool reversed = false;
-  };
-  // One motion handed to the look-ahead: a block, a part of one split at a
-  // stop mark, the rest of one (or of a curve) after a turn, a short cut. The
-  // look-ahead makes pieces of it (KRN-6); its last piece ends_block.
-  struct PushedMotion {
-    size_t block = 0;
-    Motion motion;        // in the travel direction (of a curve part: its chord, for path_ahead)
-    double origin = 0;    // where it begins in the block's programmed distance (StopPoint::programmed_place)
-    double covered = 0;   // what it adds to dist_prog_start (DPS-1)
-    SlopeType slope = SlopeType::trapez;
-    std::optional<Corner> out;  // how the path leaves it; none: taken as it is (DDTG-2)
-    std::optional<CurvePart> curve;  // a part of a curve (after a turn or a restart on it)
-    bool whole_block = false;        // as refill() pushes it: refill() can push it again
-    // The path stands before it for its block's sake (M functions, a dwell,
-    // a lift positioning since the last motion block): restart_here() pushes
-    // it again so (fuzz lift seed 2359: an M16 passed at 18 mm/s).
-    bool block_stop = false;
-    // A part of a curve too short to tell apart from its chord (10 nm),
-    // pushed as that chord: a stop on it stands on the curve (leave_front).
-    std::optional<CurvePart> chord_of = std::nullopt;
-  };
-  PushedMotion whole_block(size_t k) const;
+  MotionPiece whole_block(size_t k) const;
   // The rest of block k from the stop the way the path now travels.
-  PushedMotion rest_of_block(size_t k, const Motion& rest) const;
+  MotionPiece rest_of_block(size_t k, const Motion& rest) const;
   // How the path leaves block k into the next motion block the way it travels.
   Corner corner_out(size_t k) const;
   // Every motion enters the look-ahead here: where a stop asked for lies in
   // it, split in two (stop_after).
-  void push(PushedMotion motion, bool stop_before = false);
-  void hand_over(PushedMotion motion, bool stop_before);
+  void push(MotionPiece piece, bool stop_before = false);
+  void hand_over(MotionPiece piece, bool stop_before);
   // From a stop on a contouring curve, the rest of the curve towards its
   // end (`towards_end`) or its start, then the motion of the block there;
   // the block whose motion it is.
   size_t push_along_curve(const StopPoint& stop, bool towards_end);
-  // A part of a curve for `block` (split at a stop mark as push() does).
-  void push_curve_part(size_t block, const CurvePart& part);
+  // A span of a curve for `block` (split at a stop mark as push() does).
+  void push_curve_span(size_t block, const CurveSpan& span);
   void place_stop(std::vector<double> position);
   // Nothing more comes into the look-ahead this way: a stop not placed yet lands at its end.
   void place_stop_at_end();
@@ -276,10 +248,7 @@ class PathInterpolator {
   const MachineConfig& machine_;
   PathObserver& observer_;
   BlockWindow blocks_;  // the program, as far as read and not forgotten
-  size_t stored_blocks_ = past_program_end;
-  // The stored contour's first block: stored_blocks_ motion blocks below
-  // cursors_.begun (history_motion_ of them counted in [history_start_, history_counted_)).
-  size_t history_start_ = 0, history_counted_ = 0, history_motion_ = 0;
+  StoredContour stored_contour_;
   BlockCursors cursors_;
   TravelDirection direction_ = TravelDirection::forward;
   LookAhead look_ahead_;
@@ -288,18 +257,14 @@ class PathInterpolator {
   bool replan_ = false;          // a stop was placed or released: plan again
   bool factor_changed_ = false;  // the velocity factor changed: plan again
   Arrival plan_arrival_ = Arrival::as_asked;  // how the plan arrives at its stretch's end
-  // Path length travelled (either direction) before the front segment, and
-  // where a stop is asked for on the same scale.
+  // Path length travelled (either direction) before the front segment; the
+  // same on the scale of covered distance (DPS-1), and where the look-ahead's
+  // pushed segments end on it.
   double travelled_before_front_ = 0;
-  std::optional<double> stop_at_;
-  // The same on the scale of covered distance (DPS-1), for a stop not yet
-  // placed in the look-ahead; where the look-ahead's pushed segments end.
   double covered_before_front_ = 0;
-  std::optional<double> stop_covered_;
-  double stop_covered_from_ = 0;
-  std::optional<PlacedStop> placed_stop_;
   double pushed_covered_ = 0;
-  RingQueue<PushedMotion> pushed_;  // from the front's on
+  PathStop stop_;
+  RingQueue<MotionPiece> pushed_;  // from the front's on
   // The front's finished pieces' dist_prog_start share (KRN-6: a motion is
   // several pieces).
   double front_done_ = 0;

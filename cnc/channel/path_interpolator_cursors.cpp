@@ -36,7 +36,7 @@ std::string PathInterpolator::check_invariants() const {
   // The motions pushed come from the blocks the look-ahead has passed, in
   // the order of travel.
   size_t previous = backward ? past_program_end : 0;
-  for (const PushedMotion& p : pushed_) {
+  for (const MotionPiece& p : pushed_) {
     if (backward ? p.block > previous : p.block < previous)
       return "a motion of block " + text(p.block) + " pushed after one of block " + text(previous);
     previous = p.block;

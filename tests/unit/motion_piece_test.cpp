@@ -1,0 +1,139 @@
+// What the interpolator hands the look-ahead (issue 35): one MotionPiece
+// for lines, arcs and spans of contouring curves, split where an insert
+// stop mark lies (ISC-3), and the stop on its two scales (PathStop).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "contour_builder.hpp"
+#include "motion_piece.hpp"
+#include "path_stop.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+
+namespace {
+
+Motion line(std::vector<double> start, std::vector<double> end) {
+  Motion m;
+  m.start = std::move(start);
+  m.end = std::move(end);
+  m.feed = 50;
+  return m;
+}
+
+MotionPiece piece_of(const Motion& motion, double covered) {
+  MotionPiece piece;
+  piece.block = 3;
+  piece.motion = motion;
+  piece.covered = covered;
+  piece.origin = 0;
+  piece.out = Corner{BlockTransition::contour, {}};
+  piece.whole_block = piece.block_stop = true;
+  return piece;
+}
+
+// The contouring curve G261 puts between X10 and Y10 from (0, 0).
+std::shared_ptr<const ContourJoint> corner_curve(const MachineConfig& machine) {
+  ContourBuilder builder(machine);
+  const Motion a = line({0, 0, 0}, {10, 0, 0}), b = line({10, 0, 0}, {10, 10, 0});
+  const Corner contoured{BlockTransition::contour, {}};
+  builder.add(0, a, PathSegment(a, machine), SlopeType::trapez, false, contoured);
+  for (PathPiece& p : builder.add(1, b, PathSegment(b, machine), SlopeType::trapez, false, Corner{}))
+    if (p.segment.is_contour_curve()) return p.segment.joint();
+  return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("ISC-3 a piece of a line splits where the stop lies: the first ends as programmed, the second is no block stop",
+          "[path][isc]") {
+  const MachineConfig machine = test::xyz_machine();
+  const MotionPiece whole = piece_of(line({0, 0, 0}, {10, 0, 0}), 10);
+  const PathSegment segment = whole.segment(machine);
+  REQUIRE(whole.length_at(4, segment) == Approx(4));
+  const auto [first, second] = whole.split_at(4, segment, 1.0);
+  CHECK(first.motion.end[0] == Approx(4));
+  CHECK(second.motion.start[0] == Approx(4));
+  CHECK(second.motion.end[0] == 10);
+  CHECK(first.covered + second.covered == Approx(10));
+  CHECK(second.origin == Approx(4));
+  // The corner at the mark is not contoured: the path stands on it.
+  REQUIRE(first.out);
+  CHECK(first.out->transition == BlockTransition::standard);
+  CHECK(second.out->transition == BlockTransition::contour);
+  CHECK(first.block_stop);
+  CHECK_FALSE(second.block_stop);
+  CHECK_FALSE(first.whole_block);
+  CHECK_FALSE(second.whole_block);
+  // The two are one motion again (a restart joins them, fuzz seed 12010265).
+  CHECK(first.continued_by(second));
+  CHECK_FALSE(second.continued_by(first));
+}
+
+TEST_CASE("ISC-3 DPS-1 backward, the second half begins where the first ends in the block's programmed distance",
+          "[path][isc]") {
+  const MachineConfig machine = test::xyz_machine();
+  MotionPiece whole = piece_of(line({10, 0, 0}, {0, 0, 0}), 10);
+  whole.origin = 10;  // backward: from the block's end
+  const auto [first, second] = whole.split_at(2.5, whole.segment(machine), -1.0);
+  CHECK(first.motion.end[0] == Approx(7.5));
+  CHECK(second.origin == Approx(7.5));
+}
+
+TEST_CASE("ISC-3 KRN-6 a span of a contouring curve splits on the curve, each half covering its share", "[path][isc]") {
+  const MachineConfig machine = test::xyz_machine();
+  const std::shared_ptr<const ContourJoint> joint = corner_curve(machine);
+  REQUIRE(joint);
+  for (const bool reversed : {false, true}) {
+    const CurveSpan span{joint, 0, joint->split, reversed};
+    const std::optional<MotionPiece> piece = MotionPiece::on_curve(Block{}, 0, span, machine);
+    REQUIRE(piece);
+    CHECK_FALSE(piece->along_chord);
+    CHECK_FALSE(piece->out);
+    const PathSegment segment = piece->segment(machine);
+    CHECK(segment.is_contour_curve());
+    CHECK(piece->covered == Approx(joint->covered(0, joint->split)));
+    const double s = segment.length() / 3;
+    const auto [first, second] = piece->split_at(s, segment, 1.0);
+    REQUIRE(first.curve);
+    REQUIRE(second.curve);
+    const double at = reversed ? joint->split - s : s;
+    CHECK((reversed ? first.curve->from : first.curve->to) == Approx(at));
+    CHECK((reversed ? second.curve->to : second.curve->from) == Approx(at));
+    CHECK(first.covered + second.covered == Approx(piece->covered));
+    const std::vector<double> point = joint->curve->position(at);
+    for (size_t i = 0; i < point.size(); ++i) {
+      CHECK(first.motion.end[i] == Approx(point[i]).margin(1e-12));
+      CHECK(second.motion.start[i] == Approx(point[i]).margin(1e-12));
+    }
+    CHECK_FALSE(first.continued_by(second));  // on a curve: not joined
+  }
+  // A span of 5 nm is its chord; one of 0.5 nm is none.
+  CHECK(MotionPiece::on_curve(Block{}, 0, {joint, 1, 1 + 5e-6, false}, machine)->along_chord);
+  CHECK_FALSE(MotionPiece::on_curve(Block{}, 0, {joint, 1, 1 + 5e-10, false}, machine));
+}
+
+TEST_CASE("ISC-3 a stop asked while standing is on the covered scale until placed, then on path length", "[path][isc]") {
+  PathStop stop;
+  stop.ask_covered(100, 7);
+  REQUIRE(stop.unplaced());
+  CHECK(*stop.unplaced() == 107);
+  CHECK_FALSE(stop.at());
+  stop.place(55, {1, 2, 3}, 106.5);
+  CHECK_FALSE(stop.unplaced());
+  CHECK(*stop.at() == 55);
+  REQUIRE(stop.placed());
+  CHECK(stop.placed()->covered == 6.5);  // less: moved to the end of what there is
+  stop.not_before(60);  // the path cannot brake before 60
+  CHECK(*stop.at() == 60);
+  // A stop asked while moving takes the place of any asked before.
+  stop.ask_covered(0, 5);
+  stop.ask_at_length(80);
+  CHECK_FALSE(stop.unplaced());
+  CHECK_FALSE(stop.placed());
+  CHECK(*stop.at() == 80);
+  stop.release();
+  CHECK_FALSE(stop.at());
+}
