@@ -23,23 +23,20 @@ bool finite(const PathSegment& segment) {
 }  // namespace
 
 void PathInterpolator::refill() {
-  if (direction_ == TravelDirection::backward) refill_backward();
+  if (program_.backward()) refill_backward();
   else refill_forward();
-  const bool exhausted = direction_ == TravelDirection::backward
-                             ? cursors_.next_backward <= cursors_.lowest_stored
-                             : !blocks_.has(cursors_.next_to_look_ahead) || cursors_.next_to_look_ahead == invalid_block_;
-  if (exhausted) place_stop_at_end();
+  if (program_.exhausted()) place_stop_at_end();
 }
 
 MotionPiece PathInterpolator::whole_block(size_t k) const {
-  const Block& block = blocks_[k];
+  const Block& block = program_[k];
   MotionPiece piece;
   piece.block = k;
-  piece.motion = direction_ == TravelDirection::backward ? reversed(block.motion) : block.motion;
+  piece.motion = program_.backward() ? reversed(block.motion) : block.motion;
   piece.covered = PathSegment(block.motion, machine_).covered_distance();
-  piece.origin = direction_ == TravelDirection::backward ? piece.covered : 0.0;
+  piece.origin = program_.backward() ? piece.covered : 0.0;
   piece.slope = block.slope;
-  piece.out = corner_out(k);
+  piece.out = program_.corner_out(k);
   piece.whole_block = true;
   return piece;
 }
@@ -49,15 +46,11 @@ MotionPiece PathInterpolator::rest_of_block(size_t k, const Motion& rest) const 
   piece.block = k;
   piece.motion = rest;
   piece.covered = PathSegment(rest, machine_).covered_distance();
-  const double end = direction_ == TravelDirection::backward ? 0.0 : PathSegment(blocks_[k].motion, machine_).covered_distance();
+  const double end = program_.backward() ? 0.0 : PathSegment(program_[k].motion, machine_).covered_distance();
   piece.origin = end - direction_sign() * piece.covered;
-  piece.slope = blocks_[k].slope;
-  piece.out = corner_out(k);
+  piece.slope = program_[k].slope;
+  piece.out = program_.corner_out(k);
   return piece;
-}
-
-Corner PathInterpolator::corner_out(size_t k) const {
-  return direction_ == TravelDirection::backward ? corner_below(k) : corner_after(blocks_[k]);
 }
 
 void PathInterpolator::push(MotionPiece m, bool stop_before) {
@@ -116,14 +109,13 @@ size_t PathInterpolator::push_along_curve(const StopPoint& stop, bool towards_en
   }
   const ContourJoint::Half& last = towards_end ? j.after : j.before;
   const std::vector<double> joint_point = j.curve->position(towards_end ? length : 0.0);
-  const bool backward = direction_ == TravelDirection::backward;
-  if (const auto rest = rest_of_motion(blocks_[last.block].motion, joint_point, backward, machine_))
+  if (const auto rest = rest_of_motion(program_[last.block].motion, joint_point, program_.backward(), machine_))
     push(rest_of_block(last.block, *rest));
   return last.block;
 }
 
 void PathInterpolator::push_curve_span(size_t block, const CurveSpan& span) {
-  if (std::optional<MotionPiece> piece = MotionPiece::on_curve(blocks_[block], block, span, machine_))
+  if (std::optional<MotionPiece> piece = MotionPiece::on_curve(program_[block], block, span, machine_))
     push(std::move(*piece));
 }
 
@@ -179,8 +171,7 @@ void PathInterpolator::restart_here(double t) {
     // Nothing is left of block k: it is finished, as finish_front() would
     // have it (the cursors say where the path stands, KRN-5).
     observer_.finish_block(k);
-    if (direction_ == TravelDirection::forward) cursors_.next_to_run = std::max(cursors_.next_to_run, k + 1);
-    cursors_.last_finished = k;
+    program_.finish(k);
   }
   for (size_t i = next; i < parts.size(); ++i) {
     // The mark a part was split at is no longer in force (one stop is, and
@@ -202,53 +193,33 @@ void PathInterpolator::restart_here(double t) {
     const bool stop_before = m.block_stop;
     push(std::move(m), stop_before);
   }
-  if (direction_ == TravelDirection::backward) cursors_.next_backward = last;
-  else cursors_.next_to_look_ahead = last + 1;
+  program_.go_on_after(last);
   refill();
 }
 
 void PathInterpolator::refill_forward() {
-  size_t& next = cursors_.next_to_look_ahead;
-  for (; !look_ahead_.full() && next != invalid_block_ && blocks_.has(next); ++next) {
-    const Block& block = blocks_[next];
-    if (!block.has_motion) continue;
-    // M functions, a dwell or a channel initialisation on its line or since
-    // the last motion block: the path stands still where it starts.
-    bool stop_before = false;
-    for (size_t i = next + 1; i-- > blocks_.first_kept();) {
-      if (i < next && blocks_[i].has_motion) break;
-      stop_before = stop_before || blocks_[i].stops_path();
-    }
-    if (next < cursors_.begun) stop_before = false;  // forward again after backward motion: ran already
-    PathSegment segment(block.motion, machine_);
-    if (!finite(segment)) {
-      invalid_block_ = next;
+  while (!look_ahead_.full()) {
+    const std::optional<size_t> next = program_.next_motion_block();
+    if (!next) break;
+    if (!finite(PathSegment(program_[*next].motion, machine_))) {
+      program_.set_invalid(*next);
       look_ahead_.flush();
       return;
     }
-    push(whole_block(next), stop_before);
+    push(whole_block(*next), program_.stops_before(*next));
+    program_.go_on_after(*next);
   }
-  if (!blocks_.has(next)) look_ahead_.flush();
+  if (program_.at_read_end()) look_ahead_.flush();
 }
 
 void PathInterpolator::refill_backward() {
-  while (!look_ahead_.full() && cursors_.next_backward > cursors_.lowest_stored) {
-    const size_t i = --cursors_.next_backward;
-    if (!blocks_[i].has_motion) continue;
-    push(whole_block(i));
+  while (!look_ahead_.full()) {
+    const std::optional<size_t> next = program_.next_motion_block();
+    if (!next) break;
+    program_.go_on_after(*next);
+    push(whole_block(*next));
   }
-  if (cursors_.next_backward <= cursors_.lowest_stored) look_ahead_.flush();
-}
-
-// Backward (KRN-5, KRN-6): the path leaves block i into the motion block
-// below it through the corner at that block's end, contoured as forward
-// unless something between stops the path there.
-Corner PathInterpolator::corner_below(size_t i) const {
-  for (size_t k = i; k-- > cursors_.lowest_stored;) {
-    if (blocks_[k + 1].stops_path()) return {};
-    if (blocks_[k].has_motion) return corner_after(blocks_[k]);
-  }
-  return {};
+  if (program_.exhausted()) look_ahead_.flush();
 }
 
 }  // namespace hil::cnc

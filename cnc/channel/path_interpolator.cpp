@@ -65,7 +65,7 @@ bool PathInterpolator::push_short_cut(size_t target, const Motion& cut) {
   piece.block = target;
   piece.motion = cut;
   piece.covered = segment.covered_distance();
-  piece.slope = blocks_[target].slope;
+  piece.slope = program_[target].slope;
   push(std::move(piece));
   return true;
 }
@@ -80,15 +80,15 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   if (look_ahead_.empty()) {
     // Standing where the stored contour begins. (Forward with nothing left
     // to move, the program is about to end: it cannot turn there.)
-    if (direction_ == TravelDirection::forward) return false;
-    direction_ = TravelDirection::forward;
+    if (!program_.backward()) return false;
+    program_.turn(stored_blocks);
     // It stands in block k (at its start, or where a backward short cut
     // found nothing before it, DDTG-6): on along k from there.
-    const size_t k = cursors_.last_finished;
-    if (blocks_[k].has_motion)
-      if (const auto rest = rest_of_motion(blocks_[k].motion, setpoint_positions(), false, machine_))
+    const size_t k = program_.cursors().last_finished;
+    if (program_[k].has_motion)
+      if (const auto rest = rest_of_motion(program_[k].motion, setpoint_positions(), false, machine_))
         push(rest_of_block(k, *rest));
-    cursors_.next_to_look_ahead = k + 1;
+    program_.go_on_after(k);
     refill();
     return true;
   }
@@ -98,25 +98,18 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   // part of block k runs from a lower place on it to a higher one forward,
   // the other way backward, whether it ends where k ends or at a split.
   const bool at_part_start = stop.s < stop.front_length / 2;
-  const bool at_end_of_k = (direction_ == TravelDirection::forward) != at_part_start;
-  direction_ = direction_ == TravelDirection::forward ? TravelDirection::backward : TravelDirection::forward;
-  const bool backward = direction_ == TravelDirection::backward;
-  if (backward) {
-    size_t i = cursors_.begun, counted = 0;
-    while (i > blocks_.first_kept() && counted < stored_blocks)
-      if (blocks_[--i].has_motion) ++counted;
-    cursors_.lowest_stored = i;
-  }
+  const bool at_end_of_k = !program_.backward() != at_part_start;
+  program_.turn(stored_blocks);
+  const bool backward = program_.backward();
   // What is left of block k the new way: back to its start, or on to its end
   // (the front may be a part of block k, split at an insert stop mark). On a
   // contouring curve, back along it into the block it came from.
   size_t on = k;
   if (stop.curve) on = push_along_curve(stop, stop.curve_reversed);
-  else if (const auto rest = rest_of_motion(blocks_[k].motion, stop.position, backward, machine_, at_end_of_k))
+  else if (const auto rest = rest_of_motion(program_[k].motion, stop.position, backward, machine_, at_end_of_k))
     push(rest_of_block(k, *rest));
-  if (backward) cursors_.next_backward = on;
-  else cursors_.next_to_look_ahead = on + 1;
-  cursors_.last_finished = on;  // where the path stands if nothing follows: at block k's start
+  program_.go_on_after(on);
+  program_.stands_in(on);  // where the path stands if nothing follows: at block k's start
   refill();
   return true;
 }
@@ -124,11 +117,10 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
 void PathInterpolator::begin_front(const MotionState& state, double t0) {
   const size_t index = look_ahead_.front().block_index;
   run_blocks_without_motion(index);
-  const bool first_time = direction_ == TravelDirection::forward && index >= cursors_.begun;
+  const bool first_time = program_.begin(index);
   // Once per motion, at its first piece (contoured blocks are several, KRN-6).
   if (look_ahead_.front().begins_block)
-    observer_.reach_block(blocks_[index], index, first_time);  // its M functions go out before its motion (MVS_SVS)
-  if (first_time) cursors_.begun = index + 1;
+    observer_.reach_block(program_[index], index, first_time);  // its M functions go out before its motion (MVS_SVS)
   plan(state, t0);
 }
 
@@ -210,17 +202,7 @@ std::vector<Motion> PathInterpolator::path_ahead() const {
     }
     ahead.push_back(motion);
   }
-  if (direction_ == TravelDirection::backward) {
-    for (size_t i = cursors_.next_backward; i-- > cursors_.lowest_stored;)
-      if (blocks_[i].has_motion) ahead.push_back(reversed(blocks_[i].motion));
-  } else {
-    // As far as the program is read, and at most path_ahead_blocks further.
-    const size_t first = cursors_.next_to_look_ahead;
-    for (size_t i = first; i != invalid_block_ && (i < blocks_.read_end() || i - first < path_ahead_blocks) &&
-                           blocks_.has(i);
-         ++i)
-      if (blocks_[i].has_motion) ahead.push_back(blocks_[i].motion);
-  }
+  program_.motions_ahead(ahead, path_ahead_blocks);
   return ahead;
 }
 
@@ -233,7 +215,7 @@ void PathInterpolator::stop_after(double t, double distance, bool rebuild) {
   stop_.ask_covered(covered_before_front_ + (look_ahead_.empty() ? 0.0 : std::abs(front_covered_)), distance);
   if (!rebuild) return;
   if (!look_ahead_.empty()) restart_here(t);
-  else if (!blocks_.empty()) refill();
+  else if (!program_.blocks().empty()) refill();
   replan_ = true;
 }
 
@@ -259,9 +241,7 @@ void PathInterpolator::finish_front() {
     pushed_.pop_front();
     front_done_ = 0;
   }
-  if (direction_ == TravelDirection::forward)
-    cursors_.next_to_run = std::max(cursors_.next_to_run, front.block_index + 1);
-  cursors_.last_finished = front.block_index;
+  program_.finish(front.block_index);
   look_ahead_.pop_front();
   refill();
   forget_history();
@@ -269,21 +249,17 @@ void PathInterpolator::finish_front() {
 
 // #DISTANCE PROG START and M30 act when the interpolator reaches them.
 void PathInterpolator::run_blocks_without_motion(size_t up_to) {
-  for (; cursors_.next_to_run < up_to && blocks_.has(cursors_.next_to_run); ++cursors_.next_to_run) {
-    observer_.reach_block(blocks_[cursors_.next_to_run], cursors_.next_to_run, true);
-    // To the program's end (nothing moves any more, no turn): what ran is not needed.
-    if (up_to == past_program_end) blocks_.forget_before(cursors_.next_to_run);
+  while (const std::optional<size_t> k = program_.next_to_run_before(up_to)) {
+    observer_.reach_block(program_[*k], *k, true);
+    program_.ran(up_to);
   }
 }
 
 void PathInterpolator::forget_history() {
-  if (stored_contour_.keeps_all()) return;
-  const size_t stored_from = stored_contour_.first_block(blocks_, std::min(cursors_.begun, blocks_.read_end()));
-  size_t keep = std::min({stored_from, cursors_.next_to_run, cursors_.last_finished, cursors_.next_to_look_ahead});
-  if (direction_ == TravelDirection::backward) keep = std::min({keep, cursors_.lowest_stored, cursors_.next_backward});
+  size_t keep = past_program_end;
   if (!pushed_.empty()) keep = std::min(keep, pushed_.front().block);
   if (!look_ahead_.empty()) keep = std::min(keep, look_ahead_.front().block_index);
-  blocks_.forget_before(keep);
+  program_.forget_history(keep);
 }
 
 PathProgress PathInterpolator::interpolate(double t) {
@@ -305,7 +281,7 @@ PathProgress PathInterpolator::interpolate(double t) {
     if (look_ahead_.empty()) {
       // Leave the last block exactly on its programmed end point.
       for (size_t i = 0; i < setpoints_.size(); ++i) setpoints_[i] = {end_point[i], 0, 0};
-      reached_contour_start = direction_ == TravelDirection::backward;
+      reached_contour_start = program_.backward();
       break;
     }
     // Go on from where the path left the block: at t, or where a plan that
@@ -329,10 +305,10 @@ PathProgress PathInterpolator::interpolate(double t) {
   if (look_ahead_.empty()) {
     path_velocity_ = path_acceleration_ = 0;
     front_covered_ = 0;
-    if (direction_ == TravelDirection::backward)
+    if (program_.backward())
       return reached_contour_start ? PathProgress::reached_contour_start : PathProgress::at_contour_start;
-    if (invalid_block_) {
-      run_blocks_without_motion(*invalid_block_);
+    if (const std::optional<size_t>& invalid = program_.invalid_block()) {
+      run_blocks_without_motion(*invalid);
       return PathProgress::invalid_block;
     }
     // Every block decoded correctly has run.
@@ -345,9 +321,7 @@ PathProgress PathInterpolator::interpolate(double t) {
   look_ahead_.clear();
   pushed_.clear();
   front_done_ = 0;
-  blocks_.close();
-  cursors_.next_to_look_ahead = cursors_.next_to_run = cursors_.next_backward = past_program_end;
-  cursors_.lowest_stored = past_program_end;
+  program_.abandon();
   for (AxisSetpoint& setpoint : setpoints_) setpoint.velocity = setpoint.acceleration = 0;
   path_velocity_ = path_acceleration_ = 0;
   return PathProgress::setpoint_not_finite;

@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "block.hpp"
-#include "block_cursors.hpp"
 #include "block_source.hpp"
 #include "block_window.hpp"
 #include "look_ahead.hpp"
@@ -19,9 +18,9 @@
 #include "machine_config.hpp"
 #include "motion_profile.hpp"
 #include "path_stop.hpp"
+#include "program_position.hpp"
 #include "position_profile.hpp"
 #include "ring_queue.hpp"
-#include "stored_contour.hpp"
 
 namespace hil::cnc {
 
@@ -30,8 +29,6 @@ struct AxisSetpoint {
   double velocity = 0;      // mm/s
   double acceleration = 0;  // mm/s^2
 };
-
-enum class TravelDirection { forward, backward };
 
 // What the interpolator tells the channel while it moves.
 class PathObserver {
@@ -86,45 +83,39 @@ class PathInterpolator {
   // The program's blocks, read from `source` as the look-ahead needs them
   // (issue 17); `stored_blocks`: the motion blocks P-STUP-00033 keeps
   // behind the furthest one begun, for backward motion (KRN-5).
-  void load(BlockSource& source, size_t stored_blocks) {
-    blocks_ = BlockWindow(source);
-    stored_contour_ = StoredContour(stored_blocks);
-  }
+  void load(BlockSource& source, size_t stored_blocks) { program_.load(source, stored_blocks); }
   // All at once (tests), all kept.
-  void load(std::vector<Block> blocks) {
-    blocks_ = BlockWindow(std::move(blocks));
-    stored_contour_ = StoredContour();
-  }
-  const BlockWindow& blocks() const { return blocks_; }
+  void load(std::vector<Block> blocks) { program_.load(std::move(blocks)); }
+  const BlockWindow& blocks() const { return program_.blocks(); }
   // Nothing more is read from the program: it ends after the blocks read.
-  void close_program() { blocks_.close(); }
+  void close_program() { program_.close(); }
   // What a short cut (delete distance to go, DDTG-6 .. DDTG-10) does to
   // where the interpolator is in the program; the cursors stay its own.
   // The commands of `block` and before have run (forward after backward
   // motion: they ran already).
-  void mark_run_through(size_t block);
+  void mark_run_through(size_t block) { program_.mark_run_through(block); }
   // DDTG-8: nothing more of the program: neither motion nor commands.
-  void abort_program();
+  void abort_program() { program_.abort_program(); }
   // DDTG-6: no motion block more forward; the commands still run.
-  void end_motion_here();
+  void end_motion_here() { program_.end_motion_here(); }
   // Forward: the look-ahead goes on after `block` (a short cut's target).
-  void look_ahead_after(size_t block);
+  void look_ahead_after(size_t block) { program_.look_ahead_after(block); }
   // Backward: the blocks below `block` enter the look-ahead next.
-  void look_back_below(size_t block);
+  void look_back_below(size_t block) { program_.look_back_below(block); }
   // DDTG-6 backward: nothing more to run back to; the path stands in
   // `block`, forward again goes on from there.
-  void stand_in_block(size_t block);
+  void stand_in_block(size_t block) { program_.stand_in_block(block); }
   // The first block still stored for backward motion (P-STUP-00033).
-  size_t lowest_stored_block() const { return cursors_.lowest_stored; }
+  size_t lowest_stored_block() const { return program_.cursors().lowest_stored; }
   // What does not hold of the cursors' meaning ("" if all does; the
   // channel fuzz asks every cycle).
   std::string check_invariants() const;
-  TravelDirection direction() const { return direction_; }
-  double direction_sign() const { return direction_ == TravelDirection::backward ? -1.0 : 1.0; }
+  TravelDirection direction() const { return program_.direction(); }
+  double direction_sign() const { return program_.backward() ? -1.0 : 1.0; }
 
   // Where the path stands.
   bool empty() const { return look_ahead_.empty(); }
-  const Block& front_block() const { return blocks_[look_ahead_.front().block_index]; }
+  const Block& front_block() const { return program_[look_ahead_.front().block_index]; }
   size_t front_index() const { return look_ahead_.front().block_index; }
   // Nothing left to move, or the plan ended (held short of a block end).
   bool standing(double t) const { return look_ahead_.empty() || since_plan_start(t) >= plan_.duration(); }
@@ -189,7 +180,7 @@ class PathInterpolator {
 
   // A motion block whose geometry is not finite (a radius of 1e308): the
   // path stops at the end of the block before it, as at a decode error.
-  const std::optional<size_t>& invalid_block() const { return invalid_block_; }
+  const std::optional<size_t>& invalid_block() const { return program_.invalid_block(); }
 
   // Moves the path to time t (s after program start): a cycle's time k T,
   // as every t of this interface.
@@ -201,8 +192,6 @@ class PathInterpolator {
   MotionPiece whole_block(size_t k) const;
   // The rest of block k from the stop the way the path now travels.
   MotionPiece rest_of_block(size_t k, const Motion& rest) const;
-  // How the path leaves block k into the next motion block the way it travels.
-  Corner corner_out(size_t k) const;
   // Every motion enters the look-ahead here: where a stop asked for lies in
   // it, split in two (stop_after).
   void push(MotionPiece piece, bool stop_before = false);
@@ -220,7 +209,6 @@ class PathInterpolator {
   void restart_here(double t);
   void refill_forward();
   void refill_backward();
-  Corner corner_below(size_t i) const;
   // Makes the look-ahead's front block the one in the interpolator, after
   // reaching the blocks without motion before it, and plans from `state`
   // (path position within the block) at time t0.
@@ -247,10 +235,7 @@ class PathInterpolator {
 
   const MachineConfig& machine_;
   PathObserver& observer_;
-  BlockWindow blocks_;  // the program, as far as read and not forgotten
-  StoredContour stored_contour_;
-  BlockCursors cursors_;
-  TravelDirection direction_ = TravelDirection::forward;
+  ProgramPosition program_;
   LookAhead look_ahead_;
   MotionProfile plan_;    // of the stretch from the front block on; p = 0 at its start
   double plan_start_cycles_ = 0;  // after program start; a plan may start between two cycles
@@ -268,7 +253,6 @@ class PathInterpolator {
   // The front's finished pieces' dist_prog_start share (KRN-6: a motion is
   // several pieces).
   double front_done_ = 0;
-  std::optional<size_t> invalid_block_;
   std::vector<AxisSetpoint> setpoints_;
   double path_velocity_ = 0;
   double path_acceleration_ = 0;

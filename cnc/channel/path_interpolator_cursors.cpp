@@ -6,30 +6,10 @@
 
 namespace hil::cnc {
 
-void PathInterpolator::mark_run_through(size_t block) {
-  cursors_.next_to_run = std::max(cursors_.next_to_run, block + 1);
-}
-
-void PathInterpolator::abort_program() {
-  close_program();
-  cursors_.next_to_look_ahead = cursors_.next_to_run = past_program_end;
-}
-
-void PathInterpolator::end_motion_here() { cursors_.next_to_look_ahead = past_program_end; }
-
-void PathInterpolator::look_ahead_after(size_t block) { cursors_.next_to_look_ahead = block + 1; }
-
-void PathInterpolator::look_back_below(size_t block) { cursors_.next_backward = block; }
-
-void PathInterpolator::stand_in_block(size_t block) {
-  cursors_.next_backward = cursors_.lowest_stored;
-  cursors_.last_finished = block;
-}
-
 std::string PathInterpolator::check_invariants() const {
-  const BlockCursors& c = cursors_;
+  const BlockCursors& c = program_.cursors();
   auto text = [](size_t i) { return i == past_program_end ? std::string("past the end") : std::to_string(i); };
-  const bool backward = direction_ == TravelDirection::backward;
+  const bool backward = program_.backward();
   if (backward && c.next_backward < c.lowest_stored)
     return "backward: the next block back " + text(c.next_backward) + " below the lowest stored " +
            text(c.lowest_stored);
