@@ -56,9 +56,13 @@ MotionPiece PathInterpolator::rest_of_block(size_t k, const Motion& rest) const 
 void PathInterpolator::push(MotionPiece m, bool stop_before) {
   m.block_stop = stop_before;
   if (pushed_.empty()) pushed_covered_ = covered_before_front_;
+  if (!stop_.unplaced()) {  // no stop to place: the geometry is hand_over()'s
+    hand_over(std::move(m), stop_before);
+    return;
+  }
   const PathSegment segment = m.segment(machine_);
   const double length = segment.length();
-  if (stop_.unplaced() && std::isfinite(length)) {
+  if (std::isfinite(length)) {
     const double s = m.length_at(*stop_.unplaced() - pushed_covered_, segment);
     if (s <= tolerance::shortest_part_mm) {  // at its start
       look_ahead_.flush();

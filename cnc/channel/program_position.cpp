@@ -33,7 +33,7 @@ std::optional<size_t> ProgramPosition::next_motion_block() {
 
 bool ProgramPosition::exhausted() const {
   if (backward()) return cursors_.next_backward <= cursors_.lowest_stored;
-  return !blocks_.has(cursors_.next_to_look_ahead) || cursors_.next_to_look_ahead == invalid_block_;
+  return at_read_end() || cursors_.next_to_look_ahead == invalid_block_;
 }
 
 void ProgramPosition::go_on_after(size_t block) {

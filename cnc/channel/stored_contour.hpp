@@ -5,7 +5,6 @@
 // be forgotten (issue 17: a program is streamed).
 #include <cstddef>
 
-#include "block_cursors.hpp"
 #include "block_window.hpp"
 
 namespace hil::cnc {
