@@ -1,7 +1,7 @@
 #pragma once
 // A first-in first-out queue on one ring of slots that grows and never
 // shrinks. Why not std::deque: libstdc++'s deque holds one element per node
-// once an element is larger than 256 bytes (a Block, a LookAheadBlock), so
+// once an element is larger than 256 bytes (a Block, a LookAheadPiece), so
 // every push allocated and every pop freed, for every block of a program
 // (issue 17: decode + plan).
 #include <algorithm>

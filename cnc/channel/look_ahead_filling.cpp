@@ -29,15 +29,12 @@ void PathInterpolator::refill() {
 }
 
 MotionPiece PathInterpolator::whole_block(size_t k) const {
-  const Block& block = program_[k];
-  MotionPiece piece;
-  piece.block = k;
-  piece.motion = program_.backward() ? reversed(block.motion) : block.motion;
-  piece.covered = PathSegment(block.motion, machine_).covered_distance();
-  piece.origin = program_.backward() ? piece.covered : 0.0;
-  piece.slope = block.slope;
+  MotionPiece piece = MotionPiece::of_block(program_[k], k, machine_);
+  if (program_.backward()) {
+    piece.motion = reversed(piece.motion);
+    piece.origin = piece.covered;
+  }
   piece.out = program_.corner_out(k);
-  piece.whole_block = true;
   return piece;
 }
 
@@ -93,8 +90,7 @@ void PathInterpolator::push(MotionPiece m, bool stop_before) {
 
 void PathInterpolator::hand_over(MotionPiece m, bool stop_before) {
   pushed_covered_ += m.covered;
-  if (m.out) look_ahead_.push(m.block, m.motion, m.slope, stop_before, *m.out, m.covered);
-  else look_ahead_.push(m.block, m.segment(machine_), m.slope, stop_before);
+  look_ahead_.push(m, stop_before);
   pushed_.push_back(std::move(m));
 }
 

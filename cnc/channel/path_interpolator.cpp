@@ -10,11 +10,13 @@
 
 namespace hil::cnc {
 PathInterpolator::PathInterpolator(const MachineConfig& machine, PathObserver& observer)
-    : machine_(machine), observer_(observer), look_ahead_(machine), setpoints_(machine.axes.size()) {}
+    : machine_(machine), observer_(observer), look_ahead_(machine) {
+  out_.axes.resize(machine.axes.size());
+}
 
 std::vector<double> PathInterpolator::setpoint_positions() const {
-  std::vector<double> positions(setpoints_.size());
-  for (size_t i = 0; i < positions.size(); ++i) positions[i] = setpoints_[i].position;
+  std::vector<double> positions(out_.axes.size());
+  for (size_t i = 0; i < positions.size(); ++i) positions[i] = out_.axes[i].position;
   return positions;
 }
 
@@ -24,7 +26,7 @@ void PathInterpolator::set_velocity_factor(double factor) {
 }
 
 StopPoint PathInterpolator::leave_front(double t) {
-  const LookAheadBlock& front = look_ahead_.front();
+  const LookAheadPiece& front = look_ahead_.front();
   StopPoint stop;
   stop.block = front.block_index;
   stop.front_length = front.segment.length();
@@ -149,24 +151,22 @@ void PathInterpolator::plan(const MotionState& state, double t0) {
       }
     }
     BlockProfile planned = block_profile(state, length, v_end, st.lim, st.slope);
-    plan_ = std::move(planned.profile);
-    plan_arrival_ = planned.arrival;
+    plan_.profile = std::move(planned.profile);
+    plan_.arrival = planned.arrival;
     // Too fast on the stretch's end, or on v_end only beyond it (fuzz seed
     // 12016401: a plan that brakes a to 0 reached v_end 1.57 mm past the
     // transition it had to keep, X's acceleration 24,512 for 2,000): the
     // transition cannot be kept, the stretch runs through it.
-    if (keeps_end(plan_arrival_)) break;
+    if (keeps_end(plan_.arrival)) break;
     Stretch longer = look_ahead_.stretch(state.v, through);
     if (longer.length <= st.length) break;  // nothing to run through
     st = longer;
   }
-  plan_start_cycles_ = t0 / machine_.cycle_time_s();
+  plan_.start_cycles = t0 / machine_.cycle_time_s();
 }
 
 void PathInterpolator::replan(double t) {
-  const MotionProfile before = plan_;
-  const double before_start = plan_start_cycles_;
-  const Arrival before_arrival = plan_arrival_;
+  const Plan before = plan_;
   plan(path_state_at(t), t);
   // An override change while the path brakes for a limiting transition can
   // leave no plan that keeps it (a curvature step's jerk share: fuzz seed
@@ -174,11 +174,7 @@ void PathInterpolator::replan(double t) {
   // mm/s^2); the plan made before keeps it: it stays, and the new factor
   // acts from the next transition. A stop must be planned for: that plan is
   // taken whatever its arrival.
-  if (!replan_ && !keeps_end(plan_arrival_) && keeps_end(before_arrival)) {
-    plan_ = before;
-    plan_start_cycles_ = before_start;
-    plan_arrival_ = before_arrival;
-  }
+  if (!replan_ && !keeps_end(plan_.arrival) && keeps_end(before.arrival)) plan_ = before;
 }
 
 std::vector<Motion> PathInterpolator::path_ahead() const {
@@ -212,7 +208,7 @@ void PathInterpolator::stop_after(double t, double distance, bool rebuild) {
     replan_ = true;
     return;
   }
-  stop_.ask_covered(covered_before_front_ + (look_ahead_.empty() ? 0.0 : std::abs(front_covered_)), distance);
+  stop_.ask_covered(covered_before_front_ + (look_ahead_.empty() ? 0.0 : std::abs(out_.front_covered)), distance);
   if (!rebuild) return;
   if (!look_ahead_.empty()) restart_here(t);
   else if (!program_.blocks().empty()) refill();
@@ -231,7 +227,7 @@ bool PathInterpolator::at_stop(double t) const {
 }
 
 void PathInterpolator::finish_front() {
-  const LookAheadBlock& front = look_ahead_.front();
+  const LookAheadPiece& front = look_ahead_.front();
   observer_.travelled(direction_sign() * front.segment.covered_distance());
   travelled_before_front_ += front.segment.length();
   covered_before_front_ += front.segment.covered_distance();
@@ -271,7 +267,7 @@ PathProgress PathInterpolator::interpolate(double t) {
   // block end (feed hold, override 0) waits there.
   while (!look_ahead_.empty()) {
     const double length = look_ahead_.front().segment.length();
-    const bool plan_ended = since_plan_start(t) >= plan_.duration();
+    const bool plan_ended = since_plan_start(t) >= plan_.profile.duration();
     if (path.p < length && !(plan_ended && path.p >= length - tolerance::length_at(length))) break;
     // A stop at the block end: the path stands on the end, in the block.
     if (plan_ended && stop_.at() && std::abs(travelled_before_front_ + length - *stop_.at()) <= tolerance::length_at(*stop_.at()))
@@ -280,7 +276,7 @@ PathProgress PathInterpolator::interpolate(double t) {
     finish_front();
     if (look_ahead_.empty()) {
       // Leave the last block exactly on its programmed end point.
-      for (size_t i = 0; i < setpoints_.size(); ++i) setpoints_[i] = {end_point[i], 0, 0};
+      for (size_t i = 0; i < out_.axes.size(); ++i) out_.axes[i] = {end_point[i], 0, 0};
       reached_contour_start = program_.backward();
       break;
     }
@@ -291,11 +287,11 @@ PathProgress PathInterpolator::interpolate(double t) {
     // the braking's last residual acceleration round the corner (KRN-3:
     // 40,004 mm/s^3 for a limit of 40,000).
     double t_from = t;
-    const bool at_rest = std::abs(plan_.end().v) <= tolerance::velocity_mm_s;
-    const bool stops_on_end = at_rest && std::abs(plan_.end().p - length) <= tolerance::length_at(length);
+    const bool at_rest = std::abs(plan_.profile.end().v) <= tolerance::velocity_mm_s;
+    const bool stops_on_end = at_rest && std::abs(plan_.profile.end().p - length) <= tolerance::length_at(length);
     if (plan_ended || stops_on_end) {
-      t_from = plan_start_cycles_ * machine_.cycle_time_s() + plan_.duration();
-      path = plan_.end();
+      t_from = plan_.start_cycles * machine_.cycle_time_s() + plan_.profile.duration();
+      path = plan_.profile.end();
       if (at_rest) path.v = path.a = 0;
     }
     path.p -= length;
@@ -303,8 +299,8 @@ PathProgress PathInterpolator::interpolate(double t) {
     path = path_state_at(t);
   }
   if (look_ahead_.empty()) {
-    path_velocity_ = path_acceleration_ = 0;
-    front_covered_ = 0;
+    out_.velocity = out_.acceleration = 0;
+    out_.front_covered = 0;
     if (program_.backward())
       return reached_contour_start ? PathProgress::reached_contour_start : PathProgress::at_contour_start;
     if (const std::optional<size_t>& invalid = program_.invalid_block()) {
@@ -315,15 +311,15 @@ PathProgress PathInterpolator::interpolate(double t) {
     run_blocks_without_motion(past_program_end);
     return PathProgress::all_blocks_run;
   }
-  if (since_plan_start(t) >= plan_.duration()) path.v = path.a = 0;  // held short of the block end
+  if (since_plan_start(t) >= plan_.profile.duration()) path.v = path.a = 0;  // held short of the block end
   if (output(path)) return PathProgress::moving;
   // Never a number that is not finite to the drives: nothing moves any more.
   look_ahead_.clear();
   pushed_.clear();
   front_done_ = 0;
   program_.abandon();
-  for (AxisSetpoint& setpoint : setpoints_) setpoint.velocity = setpoint.acceleration = 0;
-  path_velocity_ = path_acceleration_ = 0;
+  for (AxisSetpoint& setpoint : out_.axes) setpoint.velocity = setpoint.acceleration = 0;
+  out_.velocity = out_.acceleration = 0;
   return PathProgress::setpoint_not_finite;
 }
 
@@ -331,16 +327,16 @@ bool PathInterpolator::output(const MotionState& path) {
   const PathSegment& seg = look_ahead_.front().segment;
   const double s = std::clamp(path.p, 0.0, seg.length());
   const std::vector<double> p = seg.position(s), d1 = seg.tangent(s), d2 = seg.curvature(s);
-  std::vector<AxisSetpoint> next(setpoints_.size());
-  for (size_t i = 0; i < setpoints_.size(); ++i) {
+  std::vector<AxisSetpoint> next(out_.axes.size());
+  for (size_t i = 0; i < out_.axes.size(); ++i) {
     next[i] = {p[i], d1[i] * path.v, d1[i] * path.a + d2[i] * path.v * path.v};
     if (!std::isfinite(next[i].position) || !std::isfinite(next[i].velocity) || !std::isfinite(next[i].acceleration))
       return false;
   }
-  setpoints_ = std::move(next);
-  front_covered_ = direction_sign() * (seg.covered_distance() * s / seg.length());
-  path_velocity_ = path.v;
-  path_acceleration_ = path.a;
+  out_.axes = std::move(next);
+  out_.front_covered = direction_sign() * (seg.covered_distance() * s / seg.length());
+  out_.velocity = path.v;
+  out_.acceleration = path.a;
   return true;
 }
 

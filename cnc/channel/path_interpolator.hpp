@@ -118,13 +118,13 @@ class PathInterpolator {
   const Block& front_block() const { return program_[look_ahead_.front().block_index]; }
   size_t front_index() const { return look_ahead_.front().block_index; }
   // Nothing left to move, or the plan ended (held short of a block end).
-  bool standing(double t) const { return look_ahead_.empty() || since_plan_start(t) >= plan_.duration(); }
-  const std::vector<AxisSetpoint>& setpoints() const { return setpoints_; }
+  bool standing(double t) const { return look_ahead_.empty() || since_plan_start(t) >= plan_.profile.duration(); }
+  const std::vector<AxisSetpoint>& setpoints() const { return out_.axes; }
   std::vector<double> setpoint_positions() const;
-  double path_velocity() const { return path_velocity_; }
-  double path_acceleration() const { return path_acceleration_; }
+  double path_velocity() const { return out_.velocity; }
+  double path_acceleration() const { return out_.acceleration; }
   // The front block's part travelled so far, signed by the direction (DPS-1).
-  double front_covered() const { return front_covered_; }
+  double front_covered() const { return out_.front_covered; }
 
   // The hold's velocity factor (override, or 0); replans in the next interpolate().
   void set_velocity_factor(double factor);
@@ -134,7 +134,7 @@ class PathInterpolator {
   // The path stands; axis `axis` stands at `position` instead of where the
   // path put it (a lift axis landed by the lift function before a short
   // cut, LIFT-2): the path goes on from there.
-  void place_axis(size_t axis, double position) { setpoints_[axis] = {position, 0, 0}; }
+  void place_axis(size_t axis, double position) { out_.axes[axis] = {position, 0, 0}; }
   // A linear segment as block `target` into the empty look-ahead, not
   // smoothed (DDTG-2); false if it has no length.
   bool push_short_cut(size_t target, const Motion& cut);
@@ -227,9 +227,9 @@ class PathInterpolator {
   // jitter that grows with the run (KRN-3: 2e-6 of the jerk limit, 40,000.08
   // mm/s^3, 24 minutes into a run).
   double since_plan_start(double t) const {
-    return (std::nearbyint(t / machine_.cycle_time_s()) - plan_start_cycles_) * machine_.cycle_time_s();
+    return (std::nearbyint(t / machine_.cycle_time_s()) - plan_.start_cycles) * machine_.cycle_time_s();
   }
-  MotionState path_state_at(double t) const { return plan_.at(since_plan_start(t)); }
+  MotionState path_state_at(double t) const { return plan_.profile.at(since_plan_start(t)); }
   // False (setpoints unchanged) if a setpoint is not finite.
   bool output(const MotionState& path);
 
@@ -237,11 +237,14 @@ class PathInterpolator {
   PathObserver& observer_;
   ProgramPosition program_;
   LookAhead look_ahead_;
-  MotionProfile plan_;    // of the stretch from the front block on; p = 0 at its start
-  double plan_start_cycles_ = 0;  // after program start; a plan may start between two cycles
+  struct Plan {
+    MotionProfile profile;    // of the stretch from the front block on; p = 0 at its start
+    double start_cycles = 0;  // after program start; a plan may start between two cycles
+    Arrival arrival = Arrival::as_asked;  // how it arrives at its stretch's end
+  };
+  Plan plan_;
   bool replan_ = false;          // a stop was placed or released: plan again
   bool factor_changed_ = false;  // the velocity factor changed: plan again
-  Arrival plan_arrival_ = Arrival::as_asked;  // how the plan arrives at its stretch's end
   // Path length travelled (either direction) before the front segment; the
   // same on the scale of covered distance (DPS-1), and where the look-ahead's
   // pushed segments end on it.
@@ -253,10 +256,15 @@ class PathInterpolator {
   // The front's finished pieces' dist_prog_start share (KRN-6: a motion is
   // several pieces).
   double front_done_ = 0;
-  std::vector<AxisSetpoint> setpoints_;
-  double path_velocity_ = 0;
-  double path_acceleration_ = 0;
-  double front_covered_ = 0;
+  // What the path puts out at the cycle: the axes, the path's velocity and
+  // acceleration, what the front block has covered there.
+  struct Output {
+    std::vector<AxisSetpoint> axes;
+    double velocity = 0;
+    double acceleration = 0;
+    double front_covered = 0;
+  };
+  Output out_;
 };
 
 }  // namespace hil::cnc

@@ -3,7 +3,6 @@
 // something (KRN-1). Positions are absolute, in machine axis order, mm.
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,9 +28,7 @@ struct Motion {
   // velocity so that the lift axis makes its target in time, and (path-based)
   // acceleration and jerk so that the coupled lift axis stays within its
   // overload range. Infinite: none.
-  double path_v_cap = std::numeric_limits<double>::infinity();
-  double path_a_cap = std::numeric_limits<double>::infinity();
-  double path_j_cap = std::numeric_limits<double>::infinity();
+  Limits path_caps = Limits::none();
 };
 
 // #DISTANCE PROG START ON / OFF (modal) / CLEAR (DPS-2).

@@ -1,5 +1,6 @@
 #pragma once
 // Slope types of #SLOPE[TYPE=..] (KRN-3): how the acceleration changes.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -21,7 +22,18 @@ struct Limits {
   double v = 0;
   double a = 0;
   double j = 0;
+
+  // No limit at all: what a cap is where there is none.
+  static constexpr Limits none() {
+    return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+            std::numeric_limits<double>::infinity()};
+  }
 };
+
+// The lower of each (a limit under a cap: the lift function's, LIFT-2).
+inline Limits capped(const Limits& lim, const Limits& cap) {
+  return {std::min(lim.v, cap.v), std::min(lim.a, cap.a), std::min(lim.j, cap.j)};
+}
 
 // Mean jerk over a ramp of the slope type (infinite for STEP): a ramp of da
 // takes |da| / rate and changes the velocity by (a_from + a_to) |da| / (2 rate).

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "lift_limits.hpp"
 #include "path_segment.hpp"
@@ -11,7 +10,6 @@
 namespace hil::cnc {
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
 // A range with less path than this has none: the lift axis positions alone.
 constexpr double no_path_mm = tolerance::no_length_mm;
 
@@ -20,16 +18,17 @@ double overload_factor(const AxisConfig& axis) { return axis.dyn_monitoring_a_er
 // The path in a Lifting range: no faster than the profile was planned for,
 // and its acceleration and jerk within what the lift axis' overload range
 // leaves (z''' v^3 + 3 z'' v a_path + z' j_path for the jerk).
-void cap_for_lifting(const LiftRange& range, const AxisConfig& axis, double factor, double& v_cap, double& a_cap,
-                     double& j_cap) {
+Limits caps_for_lifting(const LiftRange& range, const AxisConfig& axis, double factor) {
   const Limits lift = lifting_limits(axis, factor);
-  v_cap = range.v_plan;
+  Limits caps = Limits::none();
+  caps.v = range.v_plan;
   const double slope = range.profile.max_speed() / range.v_plan;  // largest |dz/dq|
-  if (slope <= 0) return;
+  if (slope <= 0) return caps;
   const double a_left = factor * axis.a_max - lift.a;
   const double j_left = axis.j_max - lift.j;
-  a_cap = std::min(a_left / slope, 0.5 * j_left * range.v_plan / (3 * lift.a));
-  j_cap = 0.5 * j_left / slope;
+  caps.a = std::min(a_left / slope, 0.5 * j_left * range.v_plan / (3 * lift.a));
+  caps.j = 0.5 * j_left / slope;
+  return caps;
 }
 
 void plan_lifting(LiftRange& range, const AxisConfig& axis, double factor, double v_programmed) {
@@ -178,7 +177,7 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
     if (range.command.down) range.peak = range.suppressed ? std::min(z0, pos) : std::min({limit, z0, pos});
     else range.peak = range.suppressed ? std::max(z0, pos) : std::max({limit, z0, pos});
 
-    double v_cap = inf, a_cap = inf, j_cap = inf;
+    Limits caps = Limits::none();
     if (range.length < no_path_mm || !(v_programmed > 0)) {
       range.positioning = true;
       blocks[range.start].lift_positioning = pos != z0;
@@ -188,16 +187,16 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
       // starts at the end of the cycle the path reaches the range in, and
       // lands on a cycle: two cycles more.
       const double direct = positioning_time(z0, pos, advanced_lifting_limits(axis, machine.cycle_time_s()));
-      if (direct > 0) v_cap = range.length / ((direct + 2 * machine.cycle_time_s()) * override_max);
+      if (direct > 0) caps.v = range.length / ((direct + 2 * machine.cycle_time_s()) * override_max);
     } else {
       const double factor = range.suppressed ? 1.0 : overload_factor(axis);
       plan_lifting(range, axis, factor, v_programmed);
-      cap_for_lifting(range, axis, factor, v_cap, a_cap, j_cap);
+      caps = caps_for_lifting(range, axis, factor);
     }
     range.v_ahead.assign(n, 0.0);
     double ahead = 0;
     for (size_t i = n; i-- > 0;) {
-      ahead = std::max(ahead, std::min(programmed[i], v_cap));
+      ahead = std::max(ahead, std::min(programmed[i], caps.v));
       range.v_ahead[i] = ahead;
     }
     // Lifting: no contouring inside the range either, whose caps hold for
@@ -207,9 +206,7 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
       if (!block.has_motion) continue;
       if (machine.lift_method == LiftMethod::path_based && block.transition == BlockTransition::contour)
         block.transition = BlockTransition::standard;
-      block.motion.path_v_cap = std::min(block.motion.path_v_cap, v_cap);
-      block.motion.path_a_cap = std::min(block.motion.path_a_cap, a_cap);
-      block.motion.path_j_cap = std::min(block.motion.path_j_cap, j_cap);
+      block.motion.path_caps = capped(block.motion.path_caps, caps);
     }
   }
   suppress_contouring_at_ends(blocks, ranges, next_motion, machine);

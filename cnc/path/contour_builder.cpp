@@ -89,7 +89,7 @@ double ContourBuilder::corner_distance(const Open& a, const PathSegment& b, cons
 PathSegment ContourBuilder::piece_of(const Open& block, double s_from, double s_to) const {
   const double len = block.full.length();
   if (s_from <= 0 && s_to >= len) return block.full;
-  Motion m = block.motion;
+  Motion m = block.motion();
   if (s_to < len) m = motion_until(m, block.full.position(s_to));
   if (s_from > 0) m = motion_from(m, block.full.position(s_from));
   return PathSegment(m, machine_);
@@ -108,13 +108,12 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   joint->split = joint->curve->length() * share_before / (share_before + share_after);
   const double covered = a.full.covered_distance() * a.d_start / len;
   a.covered_used += covered;
-  joint->before = {p.from_index, p.from_covered, p.from_velocity, p.from_v_cap, p.from_a_cap, p.from_j_cap};
-  joint->after = {a.index, covered, a.full.programmed_velocity(), a.motion.path_v_cap, a.motion.path_a_cap,
-                  a.motion.path_j_cap};
+  joint->before = {p.from_index, p.from_covered, p.from_velocity, p.from_caps};
+  joint->after = {a.piece.block, covered, a.full.programmed_velocity(), a.motion().path_caps};
   const double split = joint->split, length = joint->curve->length();
   std::shared_ptr<const ContourJoint> shared = std::move(joint);
   out.push_back({p.from_index, PathSegment(shared, 0, split, false, machine_), p.from_slope, false, false, true});
-  out.push_back({a.index, PathSegment(shared, split, length, false, machine_), a.slope, false, true, false});
+  out.push_back({a.piece.block, PathSegment(shared, split, length, false, machine_), a.piece.slope, false, true, false});
   pending_.reset();
 }
 
@@ -129,19 +128,18 @@ void ContourBuilder::emit_middle(double d_end, std::vector<PathPiece>& out) {
     middle.set_covered_distance(covered);
     a.covered_used += covered;
   }
-  out.push_back({a.index, std::move(middle), a.slope, a.stop_before && a.d_start == 0, a.d_start == 0, ends});
+  out.push_back({a.piece.block, std::move(middle), a.piece.slope, a.stop_before && a.d_start == 0, a.d_start == 0, ends});
 }
 
 void ContourBuilder::close(std::vector<PathPiece>& out) {
   Open& a = *open_;
   if (pending_) emit_curve(a.full.curvature(a.d_start), out);
   emit_middle(0, out);
-  exact_stop_next_ = a.out.transition == BlockTransition::exact_stop;
+  exact_stop_next_ = a.out().transition == BlockTransition::exact_stop;
   open_.reset();
 }
 
-std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& motion, PathSegment segment,
-                                           SlopeType slope, bool stop_before, const Corner& out_corner) {
+std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment segment, bool stop_before) {
   std::vector<PathPiece> out;
   stop_before = stop_before || exact_stop_next_;
   exact_stop_next_ = false;
@@ -149,7 +147,7 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
   if (open_) {
     Open& a = *open_;
     const double len = a.full.length();
-    const double d = stop_before ? 0 : corner_distance(a, segment, a.out, std::min(len, segment.length()) / 2);
+    const double d = stop_before ? 0 : corner_distance(a, segment, a.out(), std::min(len, segment.length()) / 2);
     // Two curves that leave less than this of the block between them meet
     // (the rest goes to the curve after it): chords of a CAM polyline differ
     // in length by their rounding, and a micro-line between two curves would
@@ -161,7 +159,7 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
       start_point = a.full.position(a.d_start);
       start_t = a.full.tangent(a.d_start);
       start_k = a.full.curvature(a.d_start);
-      if (!a.full.is_contour_curve() && a.motion.type != MotionType::arc_cw && a.motion.type != MotionType::arc_ccw) {
+      if (!a.full.is_contour_curve() && a.motion().type != MotionType::arc_cw && a.motion().type != MotionType::arc_ccw) {
         // The bend of the polyline around the line, across its joint: the
         // turning per length of its two corners: their mean where they are
         // alike, the smaller where they turn the same way but differ more
@@ -194,7 +192,7 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
           }
         }
         const double chord = distance(start_point, segment.position(d));
-        const double cap = std::min(before.kappa_cap, kappa_cap(a.out, chord));
+        const double cap = std::min(before.kappa_cap, kappa_cap(a.out(), chord));
         const double size = norm(k);
         if (size > cap)
           for (double& x : k) x *= cap / size;
@@ -208,14 +206,12 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
       p.start = {start_point, start_t, start_k};
       p.end = {segment.position(d), segment.tangent(d), segment.curvature(d)};
       p.corner = a.full.end();
-      p.from_index = a.index;
-      p.from_slope = a.slope;
+      p.from_index = a.piece.block;
+      p.from_slope = a.piece.slope;
       p.from_velocity = a.full.programmed_velocity();
-      p.from_v_cap = a.motion.path_v_cap;
-      p.from_a_cap = a.motion.path_a_cap;
-      p.from_j_cap = a.motion.path_j_cap;
+      p.from_caps = a.motion().path_caps;
       p.from_covered = a.full.covered_distance() - a.covered_used;
-      p.kappa_cap = kappa_cap(a.out, distance(p.start.point, p.end.point));
+      p.kappa_cap = kappa_cap(a.out(), distance(p.start.point, p.end.point));
       p.d = d;
       p.d_before = len - (vanished ? a.d_start : len - d);
       p.tangent_before = a.full.tangent(len);
@@ -227,8 +223,8 @@ std::vector<PathPiece> ContourBuilder::add(size_t block_index, const Motion& mot
     open_.reset();
     d_start = d;
   }
-  open_ = Open{block_index, motion, std::move(segment), slope, stop_before, d_start, 0.0, out_corner};
-  if (out_corner.transition != BlockTransition::contour) close(out);
+  open_ = Open{piece, std::move(segment), stop_before, d_start, 0.0};
+  if (piece.out->transition != BlockTransition::contour) close(out);
   return out;
 }
 

@@ -29,23 +29,17 @@
 
 #include "block.hpp"
 #include "machine_config.hpp"
+#include "motion_piece.hpp"
 #include "path_segment.hpp"
 
 namespace hil::cnc {
 
-// How the path is to leave a block into the next motion block.
-struct Corner {
-  BlockTransition transition = BlockTransition::standard;
-  ContourMode mode;
-};
-
-// How the path leaves `block` into the next motion block. The lift
-// function's preparation has already turned the transitions it suppresses
-// into standard ones (prepare_lift_ranges, LIFT-3).
-inline Corner corner_after(const Block& block) { return {block.transition, block.contour}; }
-
+// What the path runs, after contouring: a block's part between two
+// curves (all of it where nothing is contoured), or a contouring curve's
+// half, with its covered distance and limits (the lift's caps among them)
+// in its segment.
 struct PathPiece {
-  size_t block_index = 0;
+  size_t block_index = 0;  // into the decoded program
   PathSegment segment;
   SlopeType slope = SlopeType::trapez;
   bool stop_before = false;   // v = 0 where it starts
@@ -57,11 +51,11 @@ class ContourBuilder {
  public:
   explicit ContourBuilder(const MachineConfig& machine) : machine_(machine) {}
 
-  // The next block; `out` says how the path is to leave it into the block
-  // added after it. `stop_before`: v = 0 at its start. Returns the pieces
-  // that are final now (all of it unless its end is to be contoured).
-  std::vector<PathPiece> add(size_t block_index, const Motion& motion, PathSegment segment, SlopeType slope,
-                             bool stop_before, const Corner& out);
+  // The next piece (a block, or its rest), whose `out` says how the path is
+  // to leave it into the piece added after it; `segment` its geometry.
+  // `stop_before`: v = 0 at its start. Returns the pieces that are final
+  // now (all of it unless its end is to be contoured).
+  std::vector<PathPiece> add(const MotionPiece& piece, PathSegment segment, bool stop_before);
   // Nothing follows (yet): the open block ends where it is programmed.
   std::vector<PathPiece> flush();
   void clear();
@@ -75,14 +69,13 @@ class ContourBuilder {
 
  private:
   struct Open {
-    size_t index = 0;
-    Motion motion;
+    MotionPiece piece;
     PathSegment full;
-    SlopeType slope = SlopeType::trapez;
     bool stop_before = false;
     double d_start = 0;  // taken by the curve before it
     double covered_used = 0;
-    Corner out;
+    const Corner& out() const { return *piece.out; }
+    const Motion& motion() const { return piece.motion; }
   };
   struct PendingCurve {
     ContourCurve::End start, end;
@@ -90,7 +83,7 @@ class ContourBuilder {
     size_t from_index = 0;
     SlopeType from_slope = SlopeType::trapez;
     double from_velocity = 0, from_covered = 0;
-    double from_v_cap = 0, from_a_cap = 0, from_j_cap = 0;  // the lift's caps of its block
+    Limits from_caps;  // the lift's caps of its block
     double kappa_cap = 0;  // largest curvature the end may get (PATH_DEV)
     double d = 0;
     double d_before = 0;  // programmed length it replaces before the corner

@@ -7,9 +7,10 @@
 // d²P/du² = L² k there. Evaluated by path length s (0 .. length()).
 #include <array>
 #include <cstddef>
-#include <limits>
 #include <memory>
 #include <vector>
+
+#include "slope.hpp"
 
 namespace hil::cnc {
 
@@ -61,16 +62,15 @@ class ContourCurve {
 // programmed velocity. Backward motion and a turn inside the curve run
 // along the same curve (the rest of it, either way).
 struct ContourJoint {
-  static constexpr double inf = std::numeric_limits<double>::infinity();
   std::shared_ptr<const ContourCurve> curve;
   double split = 0;
   struct Half {
     size_t block = 0;
     double covered = 0;
     double programmed_velocity = 0;
-    // The lift function's caps of its block (Motion::path_v_cap ..): a
-    // curve into or out of a lift range keeps the range's caps on its half.
-    double v_cap = inf, a_cap = inf, j_cap = inf;
+    // The lift function's caps of its block (Motion::path_caps): a curve
+    // into or out of a lift range keeps the range's caps on its half.
+    Limits caps = Limits::none();
   };
   Half before, after;
   // What [s_from, s_to] of the curve covers of the programmed distance.

@@ -24,24 +24,20 @@ double highest_entry_velocity(double v_exit, double distance, double v_cap, cons
 LookAhead::LookAhead(const MachineConfig& machine, size_t capacity)
     : machine_(machine), builder_(machine), capacity_(capacity) {}
 
-void LookAhead::push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before) {
-  flush();
+void LookAhead::push(const MotionPiece& piece, bool stop_before) {
   ++programmed_;
-  push_piece({block_index, std::move(segment), slope, stop_before, true, true});
-}
-
-void LookAhead::push(size_t block_index, const Motion& motion, SlopeType slope, bool stop_before, const Corner& out,
-                     std::optional<double> covered) {
-  ++programmed_;
-  PathSegment segment(motion, machine_);
-  if (covered) segment.set_covered_distance(*covered);
-  for (PathPiece& piece : builder_.add(block_index, motion, std::move(segment), slope, stop_before, out))
-    push_piece(std::move(piece));
+  PathSegment segment = piece.segment(machine_);
+  if (!piece.out) {
+    flush();
+    push_piece({piece.block, std::move(segment), piece.slope, stop_before, true, true});
+    return;
+  }
+  for (PathPiece& part : builder_.add(piece, std::move(segment), stop_before)) push_piece(std::move(part));
 }
 
 double LookAhead::path_length() const {
   double sum = 0;
-  for (const LookAheadBlock& b : blocks_) sum += b.segment.length();
+  for (const LookAheadPiece& b : blocks_) sum += b.segment.length();
   return sum;
 }
 
@@ -157,11 +153,11 @@ void LookAhead::backward_pass(size_t last, bool until_unchanged) {
   double v_next = 0, distance = 0;  // of the next limiting transition
   Limits lim{0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   for (size_t i = last; i-- > 0;) {
-    const LookAheadBlock& next = blocks_[i + 1];
+    const LookAheadPiece& next = blocks_[i + 1];
     const Limits next_lim = cruise_limits(i + 1);
     distance += next.segment.length();
     lim = {next_lim.v, std::min(lim.a, next_lim.a), std::min(lim.j, next_lim.j)};
-    LookAheadBlock& b = blocks_[i];
+    LookAheadPiece& b = blocks_[i];
     const Limits own = cruise_limits(i);
     const double cruise = own.v;
     const double cap = std::min({b.junction_limit, cruise, next_lim.v});

@@ -5,7 +5,6 @@
 // known block can still be kept, under the programmed velocities scaled by
 // override and feed hold.
 #include <cstddef>
-#include <optional>
 
 #include "contour_builder.hpp"
 #include "machine_config.hpp"
@@ -15,19 +14,13 @@
 
 namespace hil::cnc {
 
-struct LookAheadBlock {
+// A piece of the path as the look-ahead plans it: its geometry (a
+// programmed block, or a part of one, or a contouring curve's half,
+// KRN-6), and what the look-ahead found for it.
+struct LookAheadPiece : PathPiece {
   // Made in its place in the look-ahead: a PathSegment is large to move.
-  LookAheadBlock(PathPiece&& piece, double share)
-      : block_index(piece.block_index),
-        segment(std::move(piece.segment)),
-        slope(piece.slope),
-        jerk_share(share),
-        begins_block(piece.begins_block),
-        ends_block(piece.ends_block) {}
+  LookAheadPiece(PathPiece&& piece, double share) : PathPiece(std::move(piece)), jerk_share(share) {}
 
-  size_t block_index = 0;  // into the decoded program
-  PathSegment segment;
-  SlopeType slope = SlopeType::trapez;
   double junction_limit = 0;  // corner rule into the next block; 0 while none follows
   double jerk_share = 1;      // of its path jerk limit; less next to a curvature step
   // Highest velocity at its end: the corner rule and the programmed
@@ -38,9 +31,6 @@ struct LookAheadBlock {
   // block's acceleration or jerk limit is lower (passed with a = 0), or
   // nothing follows yet: where stretches end.
   bool limiting = true;
-  // A programmed block may be several pieces (polynomial contouring, KRN-6).
-  bool begins_block = true;
-  bool ends_block = true;
 };
 
 // The blocks from the front up to the first limiting transition: planned as
@@ -67,19 +57,15 @@ class LookAhead {
   size_t size() const { return blocks_.size(); }
   // Of the pieces to plan, from the front's start.
   double path_length() const;
-  const LookAheadBlock& front() const { return blocks_.front(); }
+  const LookAheadPiece& front() const { return blocks_.front(); }
 
-  // stop_before: the path must stand still where the block starts (an M
-  // function synchronised before its motion, a dwell). Taken as it is:
-  // not contoured (the DDTG short cut, DDTG-2; a part of a contouring
-  // curve after a turn; the planner's tests).
-  void push(size_t block_index, PathSegment segment, SlopeType slope, bool stop_before = false);
-  // A programmed block, and how the path is to leave it into the next one
-  // pushed (KRN-6: contoured with G261/G61).
-  // `covered`: the block's distance from program start, if not its own
-  // (the rest of a block after a turn, DPS-1).
-  void push(size_t block_index, const Motion& motion, SlopeType slope, bool stop_before, const Corner& out,
-            std::optional<double> covered = std::nullopt);
+  // The next piece; its `out` says how the path is to leave it into the
+  // next one pushed (KRN-6: contoured with G261/G61); without one it is
+  // taken as it is, not contoured (the DDTG short cut, DDTG-2; a span of a
+  // contouring curve after a turn or a restart). stop_before: the path
+  // must stand still where it starts (an M function synchronised before
+  // its motion, a dwell).
+  void push(const MotionPiece& piece, bool stop_before = false);
   // Nothing follows (yet): a block waiting for its successor ends as programmed.
   void flush();
   void pop_front();
@@ -118,7 +104,7 @@ class LookAhead {
   size_t programmed_ = 0;  // blocks pushed and not yet popped (the last piece of each)
   size_t capacity_;
   double factor_ = 1;
-  RingQueue<LookAheadBlock> blocks_;
+  RingQueue<LookAheadPiece> blocks_;
 };
 
 // The highest velocity v0 <= v_cap from which a velocity change (a = 0 at

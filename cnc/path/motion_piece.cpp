@@ -7,6 +7,17 @@
 
 namespace hil::cnc {
 
+MotionPiece MotionPiece::of_block(const Block& block, size_t index, const MachineConfig& machine) {
+  MotionPiece piece;
+  piece.block = index;
+  piece.motion = block.motion;
+  piece.covered = PathSegment(block.motion, machine).covered_distance();
+  piece.slope = block.slope;
+  piece.out = corner_after(block);
+  piece.whole_block = true;
+  return piece;
+}
+
 std::optional<MotionPiece> MotionPiece::on_curve(const Block& block, size_t index, const CurveSpan& span,
                                                  const MachineConfig& machine) {
   if (!(span.length() > tolerance::length_mm)) return std::nullopt;

@@ -13,13 +13,23 @@
 #include <vector>
 
 #include "block.hpp"
-#include "contour_builder.hpp"
 #include "contour_curve.hpp"
 #include "machine_config.hpp"
 #include "path_segment.hpp"
 #include "slope.hpp"
 
 namespace hil::cnc {
+
+// How the path is to leave a block into the next motion block.
+struct Corner {
+  BlockTransition transition = BlockTransition::standard;
+  ContourMode mode;
+};
+
+// How the path leaves `block` into the next motion block. The lift
+// function's preparation has already turned the transitions it suppresses
+// into standard ones (prepare_lift_ranges, LIFT-3).
+inline Corner corner_after(const Block& block) { return {block.transition, block.contour}; }
 
 // [from, to] of a contouring curve, run from `to` to `from` if reversed.
 struct CurveSpan {
@@ -49,6 +59,9 @@ struct MotionPiece {
   // it again so (fuzz lift seed 2359: an M16 passed at 18 mm/s).
   bool block_stop = false;
 
+  // The whole of `block` (at `index` of the program) as programmed, leaving
+  // it as the block says (corner_after).
+  static MotionPiece of_block(const Block& block, size_t index, const MachineConfig& machine);
   // The span of a curve as a piece of `block`; none if it has no length
   // (1 nm).
   static std::optional<MotionPiece> on_curve(const Block& block, size_t index, const CurveSpan& span,

@@ -30,7 +30,7 @@ PathSegment::PathSegment(const Motion& m, const MachineConfig& machine)
   if (arc_) set_arc_limits(m, machine);
   else set_line_limits(m, machine);
   // The lift function's caps in a lift range (LIFT-2, LIFT-3).
-  limits_ = {std::min(limits_.v, m.path_v_cap), std::min(limits_.a, m.path_a_cap), std::min(limits_.j, m.path_j_cap)};
+  limits_ = capped(limits_, m.path_caps);
   programmed_velocity_ = m.type == MotionType::rapid ? limits_.v : std::min(m.feed, limits_.v);
   set_covered_distance(machine);
 }
@@ -47,10 +47,10 @@ PathSegment::PathSegment(std::shared_ptr<const ContourJoint> joint, double s_fro
       reversed_(reversed) {
   // The lower velocity and caps of the halves it lies on.
   double programmed_velocity = inf;
-  Limits cap{inf, inf, inf};
+  Limits cap = Limits::none();
   auto lies_on = [&](const ContourJoint::Half& half) {
     programmed_velocity = std::min(programmed_velocity, half.programmed_velocity);
-    cap = {std::min(cap.v, half.v_cap), std::min(cap.a, half.a_cap), std::min(cap.j, half.j_cap)};
+    cap = capped(cap, half.caps);
   };
   if (s_from < joint_->split) lies_on(joint_->before);
   if (s_to > joint_->split) lies_on(joint_->after);
@@ -63,7 +63,7 @@ PathSegment::PathSegment(std::shared_ptr<const ContourJoint> joint, double s_fro
     programmed_velocity *= shorter;
   }
   set_contour_limits(machine, programmed_velocity);
-  limits_ = {std::min(limits_.v, cap.v), std::min(limits_.a, cap.a), std::min(limits_.j, cap.j)};
+  limits_ = capped(limits_, cap);
   programmed_velocity_ = std::min(programmed_velocity, limits_.v);
 }
 

@@ -175,9 +175,9 @@ TEST_CASE("LIFT-1 LIFT-3 LIFT-5: the path preparation finds the ranges and caps 
     CHECK(ranges[0].peak == Approx(30));
     CHECK(ranges[0].internal_blocks == 3);
     CHECK(ranges[0].profile.at(ranges[0].profile.duration()).p == Approx(12));
-    CHECK(blocks[1].motion.path_v_cap <= 100 + 1e-9);
-    CHECK(std::isfinite(blocks[1].motion.path_a_cap));
-    CHECK(std::isinf(blocks[5].motion.path_a_cap));  // after the range: no cap
+    CHECK(blocks[1].motion.path_caps.v <= 100 + 1e-9);
+    CHECK(std::isfinite(blocks[1].motion.path_caps.a));
+    CHECK(std::isinf(blocks[5].motion.path_caps.a));  // after the range: no cap
   }
   SECTION("LIFT-3 more than 20 internal blocks: the summit is the peak, the path slowed to reach it") {
     m.lift_method = LiftMethod::path_based;
@@ -223,8 +223,8 @@ TEST_CASE("LIFT-1 LIFT-3 LIFT-5: the path preparation finds the ranges and caps 
     blocks[0].lift_start = LiftStart{2, false, 40, 40};  // 30 mm up in 10 mm of path at 100 mm/s
     const LiftRange r = prepare_lift_ranges(blocks, m, origin)[0];
     const double direct = positioning_time(10, 40, advanced_lifting_limits(m.axes[2], m.cycle_time_s()));
-    CHECK(blocks[1].motion.path_v_cap == Approx(10 / ((direct + 2 * m.cycle_time_s()) * m.override_max_percent / 100.0)));
-    CHECK(r.v_ahead[1] == Approx(blocks[1].motion.path_v_cap));
+    CHECK(blocks[1].motion.path_caps.v == Approx(10 / ((direct + 2 * m.cycle_time_s()) * m.override_max_percent / 100.0)));
+    CHECK(r.v_ahead[1] == Approx(blocks[1].motion.path_caps.v));
   }
   SECTION("LIFT-5 #FLUSH: a block with LIFT_END and LIFT_START ends one range and begins the next") {
     m.lift_method = LiftMethod::time_based;

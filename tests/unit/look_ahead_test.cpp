@@ -31,6 +31,16 @@ std::vector<PathSegment> segments_of(const std::string& nc, const MachineConfig&
   return out;
 }
 
+// The motion blocks of `nc`, whole, as the interpolator pushes them.
+std::vector<MotionPiece> pieces_of(const std::string& nc, const MachineConfig& m) {
+  const DecodedProgram p = decode_program(nc, m, {0, 0, 0});
+  REQUIRE_FALSE(p.error);
+  std::vector<MotionPiece> out;
+  for (size_t i = 0; i < p.blocks.size(); ++i)
+    if (p.blocks[i].has_motion) out.push_back(MotionPiece::of_block(p.blocks[i], i, m));
+  return out;
+}
+
 // Cycles the channel needs for `nc`, checked against every axis limit.
 int64_t cycles_for(const std::string& nc, const MachineConfig& m, bool check = true) {
   Channel channel(m, nc);
@@ -122,15 +132,15 @@ TEST_CASE("KRN-3 look-ahead: collinear blocks run as fast as one block of their 
 TEST_CASE("KRN-3 look-ahead: holds FCT_LOOK_AHEAD_STANDARD = 120 blocks and can stop within them",
           "[look_ahead]") {
   const MachineConfig m = test::xyz_machine();
-  const auto segments = segments_of([] {
+  const auto pieces = pieces_of([] {
     std::ostringstream nc;
     for (int i = 1; i <= 400; ++i) nc << "G01 X" << i * 0.01 << " F60000\n";
     return nc.str();
   }(), m);
   LookAhead standard(m), longer(m, 400);
-  for (size_t i = 0; i < segments.size(); ++i) {
-    if (!standard.full()) standard.push(i, segments[i], SlopeType::trapez);
-    longer.push(i, segments[i], SlopeType::trapez);
+  for (const MotionPiece& piece : pieces) {
+    if (!standard.full()) standard.push(piece);
+    longer.push(piece);
   }
   REQUIRE(LookAhead::fct_look_ahead_standard == 120);
   CHECK(standard.size() == 120);

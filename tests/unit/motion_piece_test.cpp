@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "contour_builder.hpp"
+#include "look_ahead.hpp"
 #include "motion_piece.hpp"
 #include "path_stop.hpp"
 #include "test_machine.hpp"
@@ -37,10 +38,12 @@ MotionPiece piece_of(const Motion& motion, double covered) {
 // The contouring curve G261 puts between X10 and Y10 from (0, 0).
 std::shared_ptr<const ContourJoint> corner_curve(const MachineConfig& machine) {
   ContourBuilder builder(machine);
-  const Motion a = line({0, 0, 0}, {10, 0, 0}), b = line({10, 0, 0}, {10, 10, 0});
-  const Corner contoured{BlockTransition::contour, {}};
-  builder.add(0, a, PathSegment(a, machine), SlopeType::trapez, false, contoured);
-  for (PathPiece& p : builder.add(1, b, PathSegment(b, machine), SlopeType::trapez, false, Corner{}))
+  MotionPiece a = piece_of(line({0, 0, 0}, {10, 0, 0}), 10), b = piece_of(line({10, 0, 0}, {10, 10, 0}), 10);
+  a.block = 0;
+  b.block = 1;
+  b.out = Corner{};
+  builder.add(a, a.segment(machine), false);
+  for (PathPiece& p : builder.add(b, b.segment(machine), false))
     if (p.segment.is_contour_curve()) return p.segment.joint();
   return nullptr;
 }
@@ -136,4 +139,57 @@ TEST_CASE("ISC-3 a stop asked while standing is on the covered scale until place
   CHECK(*stop.at() == 80);
   stop.release();
   CHECK_FALSE(stop.at());
+}
+
+TEST_CASE("KRN-6 LIFT-2 LIFT-3 a contouring curve's halves keep the caps of their blocks' pieces", "[path][lift]") {
+  const MachineConfig machine = test::xyz_machine();
+  // The limits of the curve's halves, the block before the corner capped or not.
+  auto halves = [&](const Limits& caps) {
+    MotionPiece a = piece_of(line({0, 0, 0}, {10, 0, 0}), 10), b = piece_of(line({10, 0, 0}, {10, 10, 0}), 10);
+    a.block = 0;
+    b.block = 1;
+    b.out = Corner{};
+    a.motion.path_caps = caps;
+    ContourBuilder builder(machine);
+    CHECK(builder.add(a, a.segment(machine), false).empty());  // waits for its successor
+    std::vector<Limits> limits;
+    for (const PathPiece& p : builder.add(b, b.segment(machine), false))
+      if (p.segment.is_contour_curve()) limits.push_back(p.segment.limits());
+    REQUIRE(limits.size() == 2);
+    return limits;
+  };
+  const std::vector<Limits> free = halves(Limits::none());
+  const Limits caps{free[0].v / 2, free[0].a / 2, free[0].j / 2};  // a lift range's, on the block before
+  const std::vector<Limits> capped_halves = halves(caps);
+  // v counts covered distance per second there, of which the curve covers more than its length.
+  CHECK(capped_halves[0].v <= caps.v);
+  CHECK(capped_halves[0].a == caps.a);
+  CHECK(capped_halves[0].j == caps.j);
+  // The block after the corner has none: its half is as it was.
+  CHECK(capped_halves[1].v == free[1].v);
+  CHECK(capped_halves[1].a == free[1].a);
+  CHECK(capped_halves[1].j == free[1].j);
+}
+
+TEST_CASE("KRN-6 DDTG-2 the look-ahead contours a piece that says how the path leaves it, and takes one without as it is",
+          "[path][look_ahead]") {
+  const MachineConfig machine = test::xyz_machine();
+  for (const bool contoured : {true, false}) {
+    MotionPiece a = piece_of(line({0, 0, 0}, {10, 0, 0}), 10), b = piece_of(line({10, 0, 0}, {10, 10, 0}), 10);
+    a.block = 0;
+    b.block = 1;
+    if (!contoured) a.out.reset();  // a short cut (DDTG-2)
+    LookAhead look_ahead(machine);
+    look_ahead.push(a);
+    look_ahead.push(b);
+    look_ahead.flush();
+    bool curve = false;
+    double covered = 0;
+    for (; !look_ahead.empty(); look_ahead.pop_front()) {
+      curve = curve || look_ahead.front().segment.is_contour_curve();
+      covered += look_ahead.front().segment.covered_distance();
+    }
+    CHECK(curve == contoured);
+    CHECK(covered == Approx(20));  // DPS-1: the programmed lengths, contoured or not
+  }
 }

@@ -58,7 +58,7 @@ std::string difference(const Block& a, const Block& b) {
   field("motion.end", m.end == n.end);
   field("motion.center", m.center[0] == n.center[0] && m.center[1] == n.center[1]);
   field("motion.feed", m.feed == n.feed);
-  field("motion.caps", m.path_v_cap == n.path_v_cap && m.path_a_cap == n.path_a_cap && m.path_j_cap == n.path_j_cap);
+  field("motion.caps", m.path_caps.v == n.path_caps.v && m.path_caps.a == n.path_caps.a && m.path_caps.j == n.path_caps.j);
   field("slope", a.slope == b.slope);
   field("distance_prog_start", a.distance_prog_start == b.distance_prog_start);
   field("ddtg_end_marker", a.ddtg_end_marker == b.ddtg_end_marker);
