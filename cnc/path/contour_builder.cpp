@@ -113,7 +113,8 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   const double split = joint->split, length = joint->curve->length();
   std::shared_ptr<const ContourJoint> shared = std::move(joint);
   out.push_back({p.from_index, PathSegment(shared, 0, split, false, machine_), p.from_slope, false, false, true});
-  out.push_back({a.piece.block, PathSegment(shared, split, length, false, machine_), a.piece.slope, false, true, false});
+  out.push_back(
+      {a.piece.block, PathSegment(shared, split, length, false, machine_), a.piece.slope, false, true, false});
   pending_.reset();
 }
 
@@ -128,7 +129,8 @@ void ContourBuilder::emit_middle(double d_end, std::vector<PathPiece>& out) {
     middle.set_covered_distance(covered);
     a.covered_used += covered;
   }
-  out.push_back({a.piece.block, std::move(middle), a.piece.slope, a.stop_before && a.d_start == 0, a.d_start == 0, ends});
+  out.push_back(
+      {a.piece.block, std::move(middle), a.piece.slope, a.stop_before && a.d_start == 0, a.d_start == 0, ends});
 }
 
 void ContourBuilder::close(std::vector<PathPiece>& out) {
@@ -159,7 +161,8 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
       start_point = a.full.position(a.d_start);
       start_t = a.full.tangent(a.d_start);
       start_k = a.full.curvature(a.d_start);
-      if (!a.full.is_contour_curve() && a.motion().type != MotionType::arc_cw && a.motion().type != MotionType::arc_ccw) {
+      const MotionType type = a.motion().type;
+      if (!a.full.is_contour_curve() && type != MotionType::arc_cw && type != MotionType::arc_ccw) {
         // The bend of the polyline around the line, across its joint: the
         // turning per length of its two corners: their mean where they are
         // alike, the smaller where they turn the same way but differ more
