@@ -144,7 +144,7 @@ Pass run_pass(const std::string& path, const MachineConfig& machine, bool plan) 
     ++pass.blocks;
     if (!plan || !block.has_motion) continue;
     if (look_ahead.full()) plan_front();
-    look_ahead.push(MotionPiece::of_block(block, i, machine));
+    look_ahead.push(MotionPiece::of_block(block, i, PathSegment(block.motion, machine)));
   }
   while (!look_ahead.empty()) plan_front();
   pass.seconds = cpu_seconds() - cpu0;

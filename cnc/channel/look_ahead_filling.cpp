@@ -28,8 +28,8 @@ void PathInterpolator::refill() {
   if (program_.exhausted()) place_stop_at_end();
 }
 
-MotionPiece PathInterpolator::whole_block(size_t k) const {
-  MotionPiece piece = MotionPiece::of_block(program_[k], k, machine_);
+MotionPiece PathInterpolator::whole_block(size_t k, const PathSegment& segment) const {
+  MotionPiece piece = MotionPiece::of_block(program_[k], k, segment);
   if (program_.backward()) {
     piece.motion = reversed(piece.motion);
     piece.origin = piece.covered;
@@ -201,12 +201,13 @@ void PathInterpolator::refill_forward() {
   while (!look_ahead_.full()) {
     const std::optional<size_t> next = program_.next_motion_block();
     if (!next) break;
-    if (!finite(PathSegment(program_[*next].motion, machine_))) {
+    const PathSegment segment(program_[*next].motion, machine_);
+    if (!finite(segment)) {
       program_.set_invalid(*next);
       look_ahead_.flush();
       return;
     }
-    push(whole_block(*next), program_.stops_before(*next));
+    push(whole_block(*next, segment), program_.stops_before(*next));
     program_.go_on_after(*next);
   }
   if (program_.at_read_end()) look_ahead_.flush();
@@ -217,7 +218,7 @@ void PathInterpolator::refill_backward() {
     const std::optional<size_t> next = program_.next_motion_block();
     if (!next) break;
     program_.go_on_after(*next);
-    push(whole_block(*next));
+    push(whole_block(*next, PathSegment(program_[*next].motion, machine_)));
   }
   if (program_.exhausted()) look_ahead_.flush();
 }

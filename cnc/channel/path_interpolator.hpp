@@ -189,7 +189,8 @@ class PathInterpolator {
  private:
   // What enters the look-ahead: look_ahead_filling.cpp.
   void refill();
-  MotionPiece whole_block(size_t k) const;
+  // Block k, whose own segment is `segment`, the way the path travels.
+  MotionPiece whole_block(size_t k, const PathSegment& segment) const;
   // The rest of block k from the stop the way the path now travels.
   MotionPiece rest_of_block(size_t k, const Motion& rest) const;
   // Every motion enters the look-ahead here: where a stop asked for lies in

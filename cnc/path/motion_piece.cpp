@@ -7,11 +7,11 @@
 
 namespace hil::cnc {
 
-MotionPiece MotionPiece::of_block(const Block& block, size_t index, const MachineConfig& machine) {
+MotionPiece MotionPiece::of_block(const Block& block, size_t index, const PathSegment& segment) {
   MotionPiece piece;
   piece.block = index;
   piece.motion = block.motion;
-  piece.covered = PathSegment(block.motion, machine).covered_distance();
+  piece.covered = segment.covered_distance();
   piece.slope = block.slope;
   piece.out = corner_after(block);
   piece.whole_block = true;

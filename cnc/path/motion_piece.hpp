@@ -60,8 +60,9 @@ struct MotionPiece {
   bool block_stop = false;
 
   // The whole of `block` (at `index` of the program) as programmed, leaving
-  // it as the block says (corner_after).
-  static MotionPiece of_block(const Block& block, size_t index, const MachineConfig& machine);
+  // it as the block says (corner_after); `segment`: the block's own, made
+  // by the caller (the interpolator checks it is finite first).
+  static MotionPiece of_block(const Block& block, size_t index, const PathSegment& segment);
   // The span of a curve as a piece of `block`; none if it has no length
   // (1 nm).
   static std::optional<MotionPiece> on_curve(const Block& block, size_t index, const CurveSpan& span,

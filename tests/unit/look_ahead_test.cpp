@@ -37,7 +37,7 @@ std::vector<MotionPiece> pieces_of(const std::string& nc, const MachineConfig& m
   REQUIRE_FALSE(p.error);
   std::vector<MotionPiece> out;
   for (size_t i = 0; i < p.blocks.size(); ++i)
-    if (p.blocks[i].has_motion) out.push_back(MotionPiece::of_block(p.blocks[i], i, m));
+    if (p.blocks[i].has_motion) out.push_back(MotionPiece::of_block(p.blocks[i], i, PathSegment(p.blocks[i].motion, m)));
   return out;
 }
 
