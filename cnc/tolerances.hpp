@@ -40,6 +40,15 @@ constexpr double bisection_share = 1e-12;
 
 // --- The smallest geometry ----------------------------------------------
 
+// What a part program's coordinates are rounded to (TwinCAT's programming
+// resolution, 0.0001 mm: TF5200 system parameters, 2.17; what CAM posts
+// write). A point is off by up to sqrt(3) / 2 of it in space.
+constexpr double programming_resolution_mm = 1e-4;
+// No joint turning more than this is near-tangent, however short its
+// blocks (3 degrees: the default of TF5200's TRC option TANGENTIAL_LIMIT,
+// up to which the TRC calls its own inserted transitions tangential).
+constexpr double near_tangent_max_rad = 3.0 * M_PI / 180.0;
+
 // No part shorter than this (10 nm) is split off or moved: a shorter arc
 // could not be told from a full circle.
 constexpr double shortest_part_mm = 1e-5;

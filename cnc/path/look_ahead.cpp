@@ -13,12 +13,11 @@ namespace hil::cnc {
 double highest_entry_velocity(double v_exit, double distance, double v_cap, const Limits& lim, SlopeType slope,
                               double reaction_s) {
   if (v_cap <= v_exit) return v_cap;
-  auto covers = [&](double v0) {
-    return v0 * reaction_s + velocity_change(v0, 0, v_exit, lim, slope).end({0, v0, 0, 0}).p;
-  };
-  if (covers(v_cap) <= distance) return v_cap;
-  // v_exit fits, v_cap does not; the distance grows with v0.
-  return last_fitting(v_exit, v_cap, [&](double v0) { return covers(v0) <= distance; });
+  auto covers = [&](double v0) { return v0 * reaction_s + velocity_change_end({0, v0, 0, 0}, v_exit, lim, slope).p; };
+  const double at_cap = covers(v_cap);
+  if (at_cap <= distance) return v_cap;
+  // v_exit fits, v_cap does not; the distance grows with v0, smoothly.
+  return last_below(v_exit, v_cap, distance, v_exit * reaction_s, at_cap, covers);
 }
 
 LookAhead::LookAhead(const MachineConfig& machine, size_t capacity)
@@ -66,7 +65,13 @@ void LookAhead::push_piece(PathPiece&& piece) {
     // path already braked by: an arc before a dwell, entered at the speed
     // from which it could stop at full jerk, could not at half (fuzz contour
     // seed 13009555: the dwell passed at 15.5 mm/s, X 82,623 mm/s^3).
-    if (j.curvature_step && !piece.stop_before) blocks_.back().jerk_share = jerk_share = curvature_step_jerk_share;
+    // Nor where the corner rule lets none pass (a kink between blocks too
+    // short to space it, kink_spacing_velocity): fuzz contour seed
+    // 23002858, a 1.35 um block's curve halves planned at full jerk, then
+    // halved by a 21 nm rest after them.
+    const bool step = j.curvature_step && !piece.stop_before && j.v_max > 0;
+    if (step) blocks_.back().jerk_share = jerk_share = curvature_step_jerk_share;
+    blocks_.back().curvature_step = step;
   }
   blocks_.emplace_back(std::move(piece), jerk_share);
   backward_pass(blocks_.size() - 1, true);
@@ -173,8 +178,15 @@ void LookAhead::backward_pass(size_t last, bool until_unchanged) {
     // cruise velocity to the axes' limit: the path, braking through it for
     // the program end, had to reach it with a = 0 and could not, KRN-3.)
     constexpr double same = 1 - tolerance::limit_share;
-    b.limiting = cap < same * std::max(cruise, next_lim.v) || b.slope != next.slope || next_lim.a < same * own.a ||
-                 next_lim.j < same * own.j;
+    // A curvature step (a near-tangent kink) is crossed with a = 0 below
+    // the cruise velocity too: its rule assumes it (corner_rule.hpp), and
+    // the stretches then brake through a chain of them as the path can.
+    // Passed at cruise, a path braking for a corner after a chain of
+    // kinks carried an acceleration no plan could unwind once an override
+    // raise lifted the cruise above them (issue 36, fuzz contour seed
+    // 24002435: the corner run through at 8.6 mm/s, X 492,652 mm/s^3).
+    b.limiting = cap < same * std::max(cruise, next_lim.v) || b.curvature_step || b.slope != next.slope ||
+                 next_lim.a < same * own.a || next_lim.j < same * own.j;
     if (!b.limiting) {
       b.v_end = cap;  // the path passes at cruise velocity or below
       continue;

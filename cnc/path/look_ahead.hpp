@@ -23,11 +23,13 @@ struct LookAheadPiece : PathPiece {
 
   double junction_limit = 0;  // corner rule into the next block; 0 while none follows
   double jerk_share = 1;      // of its path jerk limit; less next to a curvature step
+  bool curvature_step = false;  // into the next block (or a near-tangent kink): crossed with a = 0
   // Highest velocity at its end: the corner rule and the programmed
   // velocities on both sides, and what the stretches after it allow.
   double v_end = 0;
   // The velocity must drop below a cruise velocity here (a corner, a feed
-  // change, a curvature step), or the slope type changes, or the next
+  // change), or a curvature step is crossed (with a = 0, whatever the
+  // cruise velocity), or the slope type changes, or the next
   // block's acceleration or jerk limit is lower (passed with a = 0), or
   // nothing follows yet: where stretches end.
   bool limiting = true;

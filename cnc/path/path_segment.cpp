@@ -67,6 +67,15 @@ PathSegment::PathSegment(std::shared_ptr<const ContourJoint> joint, double s_fro
   programmed_velocity_ = std::min(programmed_velocity, limits_.v);
 }
 
+double PathSegment::direction_rounding() const {
+  if (joint_ || !(length_ > 0)) return 0;
+  const double point = std::sqrt(3.0) * tolerance::programming_resolution_mm;
+  if (!arc_) return point / length_;
+  const double planar_length = length_ * planar_;
+  if (!(planar_length > 0)) return point / length_;
+  return (point + std::abs(radius_end_ - radius_)) / planar_length;
+}
+
 namespace {
 // Limits rounded down onto a grid (steps of 2^(1/16)): neighbouring curves
 // of a polyline of similar chords then share them, and the look-ahead plans

@@ -39,6 +39,7 @@ class PathSegment {
   // A part of a programmed block covers its share of it (KRN-6).
   void set_covered_distance(double distance) { covered_distance_ = distance; }
   bool is_contour_curve() const { return joint_ != nullptr; }
+  bool is_arc() const { return arc_; }
   // Of a contouring curve's part: the curve, and where path length s of the
   // part lies on it.
   const std::shared_ptr<const ContourJoint>& joint() const { return joint_; }
@@ -53,6 +54,11 @@ class PathSegment {
   // at every block transition.
   void tangent(double s, double* t) const;
   std::vector<double> curvature(double s) const;
+  // How far its tangent at either end may be off the one the programmer
+  // meant, by the program's rounding (rad): its end points' rounding
+  // across its length and, of an arc, an end radius off its start radius
+  // (a spiral, within the end point tolerance). 0 for a contouring curve.
+  double direction_rounding() const;
   // Of a line or arc: the path length s at which the motion passes the
   // point nearest to `point` along it (a line's projection, an arc's
   // angle), in [0, length] where the point lies within the motion's span,

@@ -469,6 +469,22 @@ TEST_CASE("KRN-3 KRN-6 a block after a dwell that follows an arc: the arc keeps 
   check_seeds(fuzz::ProgramKind::contour, {13009555});
 }
 
+TEST_CASE("KRN-3 KRN-6 issue 36: near-tangent kinks three cycles apart, crossed with a = 0 at any override",
+          "[channel][contour][fuzz]") {
+  // Y, Z, AA, AB (docs/FUZZ.md), fresh seeds of the first cut of near-tangent joints:
+  // kinks of 0.003 mm blocks in one sample (23000750, 23000886: Y jerk
+  // 46,565 and 40,089 for 40,000); chains of kinks passed at cruise with
+  // a != 0, then an override raise made them limiting while the path braked
+  // (24002435: the corner after them run through at 8.6 mm/s, X 492,652
+  // mm/s^3; lift 23001876); a kink that lets nothing pass halved the jerk
+  // of a curve the path already braked on (23002858).
+  check_seeds(fuzz::ProgramKind::contour, {23000750, 23000886, 24002435, 23002858});
+  check_seeds(fuzz::ProgramKind::lift, {23001876});
+  // AB: a kink of 1.6e-9 rad between collinear blocks, taken for round-off,
+  // on a path at Z's jerk limit: 30,000.11 mm/s^3 (mixed 26001680).
+  check_seeds(fuzz::ProgramKind::mixed, {26001680});
+}
+
 TEST_CASE("KRN-5 DPS-1 a turn on an arc whose end radius is off its start radius goes on along the arc",
           "[channel][fuzz]") {
   // W (docs/FUZZ.md): after a block search re-decoded an incremental block
@@ -489,18 +505,20 @@ TEST_CASE("LIFT-2 LIFT-3 KRN-6 a full circle in the lift axis' plane before LIFT
   check_seeds(fuzz::ProgramKind::lift, {19001122});
 }
 
-TEST_CASE("DPS-1 KRN-6 dist_prog_start on contouring curves at arcs of 0.13 mm radius and less grows with the chord",
+TEST_CASE("DPS-1 KRN-6 dist_prog_start on contouring curves at arcs of 0.15 mm radius and less grows with the chord",
           "[.][known-bug][channel][contour]") {
   // Open (docs/FUZZ.md M and U): a curve counts the programmed distance of
   // the block parts it replaces (DPS-1: the blocks' lengths); at tight
   // arcs it is longer than them, so dist_prog_start grows up to 0.22 % less
   // than the chord the axes move, where the fuzz allows contoured programs
   // 0.1 %. Contour 13006359 (G03 of r 0.075 mm, PATH_DEV 0.158), lift
-  // 8001172 (r 5.6 um) and 15006312 (G02 of r 0.124 mm). Whether the
+  // 8001172 (r 5.6 um) and 15006312 (G02 of r 0.124 mm); issue 36's fresh
+  // contour 26000330 (G03 R-0.145, 0.27 % less) and lift 27002862 (a G03 of
+  // r 2.9 um). Whether the
   // oracle or the map is to change waits for the path pieces of issue 35,
   // which carry that map.
-  check_seeds(fuzz::ProgramKind::contour, {13006359});
-  check_seeds(fuzz::ProgramKind::lift, {8001172, 15006312});
+  check_seeds(fuzz::ProgramKind::contour, {13006359, 26000330});
+  check_seeds(fuzz::ProgramKind::lift, {8001172, 15006312, 27002862});
 }
 
 TEST_CASE("DPS-2 DPS-3 a search continued before #DISTANCE PROG START CLEAR and a dwell, with no motion left: "

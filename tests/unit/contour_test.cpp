@@ -3,7 +3,9 @@
 // curvature step; the look-ahead over polylines of short chords.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "channel.hpp"
@@ -277,4 +279,63 @@ TEST_CASE("KRN-6 DPS-1 contoured blocks end on the programmed sums of dist_prog_
     INFO("block end " << i + 1);
     CHECK(at_change[i] == Approx(sums[i + 1]).margin(0.11));  // <= one cycle at 100 mm/s
   }
+}
+
+namespace {
+// Largest distance of a commanded position from the programmed path (any
+// of its motion blocks) while the channel runs the program.
+struct PathRun {
+  double max_deviation = 0;
+  int64_t cycles = 0;
+  logger::CheckReport check;
+};
+PathRun run_against_path(const std::string& program) {
+  const MachineConfig m = test::xyz_machine();
+  const DecodedProgram decoded = decode_program(program, m, std::vector<double>(3, 0.0));
+  REQUIRE_FALSE(decoded.error);
+  std::vector<PathSegment> path;
+  for (const Block& b : decoded.blocks)
+    if (b.has_motion) path.emplace_back(b.motion, m);
+  Channel channel(m, program);
+  logger::LimitChecker checker(m);
+  PathRun r;
+  r.cycles = test::run_program(channel, &checker, [&](int64_t, const HliState& s, HliControl&) {
+    if (s.channel_state != ChannelState::active) return;
+    AxisValues q;
+    for (const auto& sp : channel.setpoints()) q.push_back(sp.position);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const PathSegment& seg : path) {
+      const std::vector<double> p = seg.position(std::clamp(seg.length_to(q), 0.0, seg.length()));
+      nearest = std::min(nearest, std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]));
+    }
+    r.max_deviation = std::max(r.max_deviation, nearest);
+  });
+  r.check = checker.finish();
+  return r;
+}
+}  // namespace
+
+TEST_CASE("KRN-6 issue 36: G261 between tangent arcs of other radii (G165, CAM's 4 decimals) keeps PATH_DEV",
+          "[contour]") {
+  // Arcs of radius 10, 20, 7, 15 and 30 mm turning left and right in turn,
+  // each tangent to the one before, centres programmed with I J. The
+  // contouring curve of a tangent joint with a curvature step passes the
+  // joint itself; checked only there, it left the arcs between by 0.060
+  // mm for PATH_DEV 0.01 (radius 7 into 15), at 9 decimals as at 4.
+  const std::string four_decimals =
+      "N10 G90 G17 G00 X0 Y0 Z0\n"
+      "N20 #CONTOUR MODE [DEV PATH_DEV=0.01]\n"
+      "N30 G165 G261 G01 X20 Y0 F6000\n"
+      "N40 G03 X27.6604 Y3.5721 I0.0000 J10.0000\n"
+      "N50 G02 X46.4543 Y10.4125 I15.3209 J-12.8558\n"
+      "N60 G03 X54.2477 Y14.9120 I1.2155 J6.8937\n"
+      "N70 G02 X60.8431 Y22.7721 I14.0954 J-5.1303\n"
+      "N80 G03 X70.4176 Y31.5456 I-15.0000 J25.9808\n"
+      "N90 G01 X81.8892 Y47.9286\n"
+      "N100 M30\n";
+  const PathRun r = run_against_path(four_decimals);
+  INFO("deviation " << r.max_deviation << " mm, " << r.cycles << " cycles");
+  CHECK(r.check.violations.empty());
+  CHECK(r.max_deviation <= 0.01);
+  CHECK(r.max_deviation > 0.001);  // the joints are contoured, not passed as steps
 }

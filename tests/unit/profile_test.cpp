@@ -6,9 +6,11 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <sstream>
 
+#include "bisect.hpp"
 #include "position_profile.hpp"
 #include "profile_check.hpp"
 #include "velocity_profile.hpp"
@@ -339,4 +341,29 @@ TEST_CASE("KRN-3 profile: forward to a block end with an end velocity, a lower o
   CHECK(closest > 10000);
   CHECK(too_fast > 1000);
   REQUIRE(failures == 0);
+}
+
+TEST_CASE("KRN-3 last_below: the last double that fits, as bisection finds it, in fewer evaluations", "[ipo]") {
+  // The look-ahead's highest entry velocity (issue 36: 62 evaluations per
+  // transition by bisection, 13 now on the rounded chord circle).
+  std::mt19937_64 rng(36);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int k = 0; k < 2000; ++k) {
+    const double r = u(rng) * 0.01, jerk = 1000 + u(rng) * 1e5, a = 100 + u(rng) * 5000, v1 = u(rng) * 50;
+    const Limits lim{1e9, a, jerk};
+    const SlopeType slope = k % 2 ? SlopeType::trapez : SlopeType::sin2;
+    auto covers = [&](double v0) { return v0 * r + velocity_change_end({0, v0, 0, 0}, v1, lim, slope).p; };
+    const double v_cap = v1 + 1 + u(rng) * 300, limit = covers(v1 + (v_cap - v1) * u(rng));
+    int evaluations = 0;
+    const double fast = last_below(v1, v_cap, limit, v1 * r, covers(v_cap), [&](double v) {
+      ++evaluations;
+      return covers(v);
+    });
+    const double bisected = last_fitting(v1, v_cap, [&](double v) { return covers(v) <= limit; });
+    INFO("case " << k << ": " << fast << " against " << bisected);
+    CHECK(covers(fast) <= limit);
+    CHECK(covers(std::nextafter(fast, v_cap)) > limit);
+    CHECK(std::abs(fast - bisected) <= 4 * std::numeric_limits<double>::epsilon() * bisected);
+    CHECK(evaluations <= 40);
+  }
 }
