@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
   int max_failures_shown = 5;
   app.add_option("--runs", runs, "number of runs (seeds seed .. seed + runs - 1)")->check(CLI::PositiveNumber);
   app.add_option("--seed", seed, "first seed");
-  app.add_option("--program-kind", kind_name, "all (by seed), mixed, lines, arcs, steps, commands, contour, lift");
+  app.add_option("--program-kind", kind_name, "all (by seed), mixed, lines, arcs, steps, commands, contour, lift, hsc");
   app.add_option("--min-items", options.min_items, "fewest generator items per program")->check(CLI::PositiveNumber);
   app.add_option("--max-items", options.max_items, "most generator items per program")->check(CLI::PositiveNumber);
   app.add_flag("--quiet-plc", quiet_plc, "no random PLC edges: program start and prompt M acknowledgements only");

@@ -121,13 +121,19 @@ int main(int argc, char** argv) {
   CLI::App app{"contour_bench: polynomial contouring (KRN-6) on a chord circle and the demo contour"};
   int chords = 10000, decimals = 9;
   double path_dev = 0.01, radius = 15.9, chord = 0.1;
-  std::string csv_file, only_name;
+  std::string csv_file, only_name, smoothing = "g261";
+  int merge = 1;
   app.add_option("--chords", chords, "chords of the circle")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--path-dev", path_dev, "permitted path deviation, mm")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--csv", csv_file, "write the commanded path as CSV");
   app.add_option("--only", only_name, "circle or contour")->check(CLI::IsMember({"circle", "contour"}));
   app.add_option("--decimals", decimals, "decimals of the chord end points")->check(CLI::Range(0, 15))->capture_default_str();
   app.footer("Documentation: docs/PERFORMANCE.md and docs/CONTOURING.md in the source tree");
+  app.add_option("--smoothing", smoothing, "of the chord circle: g261 (polynomial contouring, KRN-6) or hsc "
+                                           "(#HSC ON [BSPLINE PATH_DEV MERGE], KRN-9)")
+      ->check(CLI::IsMember({"g261", "hsc"}))
+      ->capture_default_str();
+  app.add_option("--merge", merge, "MERGE of #HSC (0 or 1)")->check(CLI::Range(0, 1))->capture_default_str();
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   const char* csv_path = csv_file.empty() ? nullptr : csv_file.c_str();
   const char* only = only_name.empty() ? nullptr : only_name.c_str();
@@ -146,13 +152,15 @@ int main(int argc, char** argv) {
       }
       std::string program = "%chords\nN1 G90 G00 X" + std::to_string(radius) + " Y0 Z0\n";
       char line[160];
-      std::snprintf(line, sizeof line, "#CONTOUR MODE [DEV PATH_DEV=%.6g]\n", path_dev);
+      const bool hsc = smoothing == "hsc";
+      if (hsc) std::snprintf(line, sizeof line, "#HSC ON [BSPLINE PATH_DEV=%.6g MERGE=%d]\n", path_dev, merge);
+      else std::snprintf(line, sizeof line, "#CONTOUR MODE [DEV PATH_DEV=%.6g]\n", path_dev);
       if (contour) program += line;
       std::vector<Point> polyline{{radius, 0}};
       for (int c = 1; c <= chords; ++c) {
         const Point p{radius * std::cos(c * step), radius * std::sin(c * step)};
         polyline.push_back(p);
-        std::snprintf(line, sizeof line, "%sX%.*f Y%.*f%s\n", c == 1 ? (contour ? "G01 G261 " : "G01 ") : "", decimals,
+        std::snprintf(line, sizeof line, "%sX%.*f Y%.*f%s\n", c == 1 ? (contour && !hsc ? "G01 G261 " : "G01 ") : "", decimals,
                       p.x, decimals, p.y, c == 1 ? " F6000" : "");
         program += line;
       }
@@ -161,7 +169,8 @@ int main(int argc, char** argv) {
           run(machine, program, polyline, chords * chord, 100.0, chords, contour ? csv : nullptr, contour ? 4 : 3);
       char name[120];
       std::snprintf(name, sizeof name, "chord circle R%.1f, %d chords of %.2f mm, %d decimals, F6000%s", radius, chords,
-                    chord, decimals, contour ? ", G261 PATH_DEV" : ", no contouring");
+                    chord, decimals,
+                    !contour ? ", no contouring" : hsc ? (merge ? ", #HSC MERGE=1" : ", #HSC MERGE=0") : ", G261 PATH_DEV");
       print(name, r, path_dev);
     }
   }

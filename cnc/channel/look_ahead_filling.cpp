@@ -35,6 +35,7 @@ MotionPiece PathInterpolator::whole_block(size_t k, const PathSegment& segment) 
     piece.origin = piece.covered;
   }
   piece.out = program_.corner_out(k);
+  if (program_.backward()) piece.out->hsc.on = false;  // KRN-9: backward along the programmed blocks
   return piece;
 }
 
@@ -99,15 +100,15 @@ void PathInterpolator::hand_over(MotionPiece m, bool stop_before) {
 // motion where the curve does, tangent and curvature continuous.
 size_t PathInterpolator::push_along_curve(const StopPoint& stop, bool towards_end) {
   const ContourJoint& j = *stop.curve;
-  const double x = stop.curve_s, split = j.split, length = j.curve->length();
-  if (towards_end) {
-    push_curve_span(j.before.block, {stop.curve, x, split, false});
-    push_curve_span(j.after.block, {stop.curve, std::max(x, split), length, false});
-  } else {
-    push_curve_span(j.after.block, {stop.curve, split, x, true});
-    push_curve_span(j.before.block, {stop.curve, 0, std::min(x, split), true});
+  const double x = stop.curve_s, length = j.curve->length();
+  const size_t n = j.parts.size();
+  for (size_t step = 0; step < n; ++step) {
+    const size_t i = towards_end ? step : n - 1 - step;
+    const double from = j.begin(i), to = i + 1 == n ? length : j.parts[i].end;
+    if (towards_end && to > x) push_curve_span(j.parts[i].block, {stop.curve, std::max(x, from), to, false});
+    if (!towards_end && from < x) push_curve_span(j.parts[i].block, {stop.curve, from, std::min(x, to), true});
   }
-  const ContourJoint::Half& last = towards_end ? j.after : j.before;
+  const ContourJoint::Part& last = towards_end ? j.parts.back() : j.parts.front();
   const std::vector<double> joint_point = j.curve->position(towards_end ? length : 0.0);
   if (const auto rest = rest_of_motion(program_[last.block].motion, joint_point, program_.backward(), machine_))
     push(rest_of_block(last.block, *rest));
@@ -155,6 +156,15 @@ void PathInterpolator::restart_here(double t) {
     last = push_along_curve(stop, !stop.curve_reversed);
     for (size_t i = 1; i < parts.size(); ++i)
       if (parts[i].block == last) next = i + 1;
+    if (pushed_.empty()) {
+      // Standing on the curve's end, where block `last` ends too (an HSC
+      // span ends on its block's programmed end, KRN-9): it is finished, or
+      // the cursors still named the block before it (fuzz hsc seed
+      // 31002326: turned there, the path ran from the start of N40 straight
+      // to the end of N50, 1.5e-3 mm of dist_prog_start short).
+      observer_.finish_block(last);
+      program_.finish(last);
+    }
   } else if (const auto rest = rest_of_motion(front.motion, stop.position, false, machine_, left < front.covered / 2)) {
     // What is left of the front, from where the path stands: also a rest
     // too short for its own geometry (a straight line: a 4.6 nm rest

@@ -55,6 +55,22 @@ struct ContourMode {
   double dist = 0;         // mm, DIST: distance of the curve's ends from the corner
 };
 
+// #HSC ON [BSPLINE ..] (KRN-9, programming manual "Trim a contour"): runs
+// of short G01 blocks are smoothed into one curvature-continuous spline
+// (cnc/path/hsc_spline.hpp, docs/HSC.md). Defaults as the manual's.
+struct HscMode {
+  bool on = false;
+  double path_dev = 0.2;        // mm, main axes; 0: not monitored
+  double track_dev = 5;         // degrees (mm for a linear axis) of the other axes; 0: not monitored
+  bool merge = false;           // MERGE=1: a spline span takes several blocks
+  bool auto_off_path = false;   // AUTO_OFF_PATH=1: a span beyond PATH_DEV keeps its blocks' corners
+  bool auto_off_track = false;  // AUTO_OFF_TRACK=1: likewise for TRACK_DEV
+  bool auto_off_g00 = false;    // AUTO_OFF_G00=1: a G00 block switches HSC off
+  bool auto_off_g60 = false;    // AUTO_OFF_G60=1: G60 / G360 switch HSC off
+  double max_path_length = 0;   // mm: a longer block ends the spline; 0: any length
+  double max_angle = 0;         // degrees: a sharper bend stays a corner; 0: the rig's hsc_corner_angle_deg
+};
+
 // A technology function of a line for the PLC (MVS_SVS): M<nr>, H<nr>,
 // T<nr>, S<value> (rpm; with M03 / M04 or while the spindle turns) or
 // D<nr> (the tool offset, shown on the HLI without a handshake), KRN-8;
@@ -120,6 +136,7 @@ struct Block {
   // How the path leaves this motion block (KRN-6), with the contour mode in force.
   BlockTransition transition = BlockTransition::standard;
   ContourMode contour;
+  HscMode hsc;  // in force for this motion block (KRN-9)
   std::optional<int> programmed_stop;  // M00 (0) or M01 (1), ISC-5
   std::optional<InsertCmdLine> insert_cmd;
   // The lift function (LIFT-1, LIFT-5): a range begins with this block, and

@@ -32,6 +32,7 @@ struct ModalState {
   // end what they name (KRN-6).
   BlockTransition transition = BlockTransition::standard;
   ContourMode contour;  // #CONTOUR MODE [..]
+  HscMode hsc;          // #HSC ON/OFF [BSPLINE ..] (KRN-9)
   bool inch = false;    // G70; G71 (mm) is the initial state (KRN-8)
 };
 

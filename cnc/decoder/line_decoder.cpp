@@ -254,6 +254,13 @@ void decode_motion(const BlockWords& programmed, DecoderState& state, Block& blo
                      : programmed.transition == 61 ? BlockTransition::contour
                                                    : modal.transition;
   block.contour = modal.contour;
+  // KRN-9: G00 and exact stops switch HSC off where AUTO_OFF_G00 /
+  // AUTO_OFF_G60 say so; otherwise a G00 block is not smoothed and an exact
+  // stop ends the spline where it stands (hsc_spline.hpp).
+  if (modal.hsc.on && ((m.type == MotionType::rapid && modal.hsc.auto_off_g00) ||
+                       (block.transition == BlockTransition::exact_stop && modal.hsc.auto_off_g60)))
+    modal.hsc.on = false;
+  block.hsc = modal.hsc;
   if (m.type != MotionType::rapid && !(modal.feed > 0)) throw LineError{"no feed F programmed for G01/G02/G03"};
   m.feed = modal.feed;  // G00 too: a short cut to its end runs at it (DDTG-2)
   if (is_arc) set_arc_centre(m, programmed.arc, state);

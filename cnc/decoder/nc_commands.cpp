@@ -238,6 +238,59 @@ void decode_contour_mode(const std::string& arguments, DecoderState& state, Bloc
   if (args.on) state.modal.transition = BlockTransition::contour;
 }
 
+// #HSC [ON|OFF] [BSPLINE PATH_DEV=.. TRACK_DEV=.. MERGE=.. AUTO_OFF_PATH=..
+// AUTO_OFF_TRACK=.. AUTO_OFF_G00=.. AUTO_OFF_G60=.. MAX_PATH_LENGTH=..
+// MAX_ANGLE=..] (KRN-9, programming manual "Trim a contour"): BSPLINE first;
+// parameters are modal and may be set without ON; OFF takes none.
+void decode_hsc(const std::string& arguments, DecoderState& state, Block&) {
+  const CommandArguments args = read_command_arguments("#HSC", arguments);
+  if (args.on == false) {
+    if (args.has_list) throw LineError{"#HSC OFF takes no parameters"};
+    state.modal.hsc.on = false;
+    return;
+  }
+  if (!args.on && !args.has_list) throw LineError{"#HSC needs ON, OFF or [BSPLINE ..]"};
+  HscMode mode = state.modal.hsc;
+  if (args.has_list) {
+    if (args.parameters.empty() || args.parameters[0].key != "BSPLINE" || args.parameters[0].value)
+      throw LineError{"#HSC: BSPLINE must be the first keyword of the list (the only HSC type of TF5200)"};
+    for (size_t i = 1; i < args.parameters.size(); ++i) {
+      const CommandParameter& item = args.parameters[i];
+      const std::string& key = item.key;
+      if (!item.value) throw LineError{"#HSC: '" + key + "' needs a value (" + key + "=..)"};
+      double value = 0;
+      try {
+        value = state.evaluate(*item.value);
+      } catch (const std::invalid_argument& e) {
+        throw LineError{"#HSC " + key + ": " + e.what()};
+      }
+      auto length = [&](double& field, const char* unit) {
+        if (!(value >= 0 && value <= max_length_mm))
+          throw LineError{"#HSC " + key + " must be >= 0 and <= " + std::to_string(max_length_mm) + " " + unit};
+        field = value;
+      };
+      auto flag = [&](bool& field) {
+        if (value != 0 && value != 1) throw LineError{"#HSC " + key + " must be 0 or 1"};
+        field = value == 1;
+      };
+      if (key == "PATH_DEV") length(mode.path_dev, "mm");
+      else if (key == "TRACK_DEV") length(mode.track_dev, "degrees");
+      else if (key == "MAX_PATH_LENGTH") length(mode.max_path_length, "mm");
+      else if (key == "MAX_ANGLE") {
+        if (!(value >= 0 && value <= 180)) throw LineError{"#HSC MAX_ANGLE must be >= 0 and <= 180 degrees"};
+        mode.max_angle = value;
+      } else if (key == "MERGE") flag(mode.merge);
+      else if (key == "AUTO_OFF_PATH") flag(mode.auto_off_path);
+      else if (key == "AUTO_OFF_TRACK") flag(mode.auto_off_track);
+      else if (key == "AUTO_OFF_G00") flag(mode.auto_off_g00);
+      else if (key == "AUTO_OFF_G60") flag(mode.auto_off_g60);
+      else throw LineError{"#HSC: unknown parameter '" + key + "'"};
+    }
+  }
+  if (args.on) mode.on = true;
+  state.modal.hsc = mode;
+}
+
 // A whole number of an #INSERT CMD parameter within [min, max].
 int64_t insert_whole(const std::string& key, const std::string& text, const DecoderState& state, int64_t min,
                      int64_t max) {
@@ -321,6 +374,7 @@ constexpr NcCommand nc_commands[] = {
     {"#CHANNEL INIT", decode_channel_init},
     {"#INSERT CMD", decode_insert_cmd},
     {"#CONTOUR MODE", decode_contour_mode},
+    {"#HSC", decode_hsc},
     {"#FLUSH", decode_flush},
     {"#FLUSH WAIT", decode_flush_wait},
     {"#ROTATION", decode_rotation},

@@ -81,6 +81,7 @@ void suppress_contouring_at_ends(std::vector<Block>& blocks, const std::vector<L
   };
   auto suppress = [](Block& block) {
     if (block.transition == BlockTransition::contour) block.transition = BlockTransition::standard;
+    block.hsc.on = false;  // KRN-9: nor does an HSC spline pass there
   };
   // Lifting couples the lift axis to the covered distance (DPS-1), which a
   // curve counts at another rate per length than the line it joins: the
@@ -206,6 +207,7 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
       if (!block.has_motion) continue;
       if (machine.lift_method == LiftMethod::path_based && block.transition == BlockTransition::contour)
         block.transition = BlockTransition::standard;
+      block.hsc.on = false;  // KRN-9: a spline would not keep the range's caps per block
       block.motion.path_caps = capped(block.motion.path_caps, caps);
     }
   }

@@ -128,12 +128,12 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   // Split where the programmed shares meet, so that both halves count the
   // same share of programmed distance per path length.
   const double share_after = a.d_start, share_before = p.d_before;
-  joint->split = joint->curve->length() * share_before / (share_before + share_after);
+  const double length = joint->curve->length();
+  const double split = length * share_before / (share_before + share_after);
   const double covered = a.full.covered_distance() * a.d_start / len;
   a.covered_used += covered;
-  joint->before = {p.from_index, p.from_covered, p.from_velocity, p.from_caps};
-  joint->after = {a.piece.block, covered, a.full.programmed_velocity(), a.motion().path_caps};
-  const double split = joint->split, length = joint->curve->length();
+  joint->parts = {{p.from_index, p.from_covered, p.from_velocity, p.from_caps, split},
+                  {a.piece.block, covered, a.full.programmed_velocity(), a.motion().path_caps, length}};
   std::shared_ptr<const ContourJoint> shared = std::move(joint);
   out.push_back({p.from_index, PathSegment(shared, 0, split, false, machine_), p.from_slope, false, false, true});
   out.push_back(

@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "block.hpp"
@@ -60,6 +61,9 @@ class ContourBuilder {
   std::vector<PathPiece> flush();
   void clear();
   bool has_open() const { return open_.has_value(); }
+  // The block closed last ends with an exact stop, and what follows does
+  // not come here (an HSC spline, KRN-9): the path stands before it.
+  bool take_exact_stop() { return std::exchange(exact_stop_next_, false); }
 
   // The corner distance for a corner between tangents t1, t2 (unit):
   // PATH_DEV with the curve's end curvatures 0 (lines) is reached at

@@ -203,7 +203,10 @@ double ContourJoint::covered(double s_from, double s_to) const {
     const double overlap = std::min(s_to, hi) - std::max(s_from, lo);
     return hi > lo && overlap > 0 ? covered_half * overlap / (hi - lo) : 0.0;
   };
-  return share(0, split, before.covered) + share(split, length, after.covered);
+  double sum = 0;
+  for (size_t i = 0; i < parts.size(); ++i)
+    sum += share(begin(i), i + 1 == parts.size() ? length : parts[i].end, parts[i].covered);
+  return sum;
 }
 
 }  // namespace hil::cnc

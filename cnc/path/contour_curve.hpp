@@ -55,24 +55,27 @@ class ContourCurve {
   Frame frame(double u) const;
 };
 
-// A contouring curve where it replaces a corner (KRN-6): the half up to
-// `split` belongs to the block before the corner (in the travel direction
-// it was built for), the rest to the block after it. Each half covers the
-// programmed distance it replaces (DPS-1) and runs at most at its block's
-// programmed velocity. Backward motion and a turn inside the curve run
-// along the same curve (the rest of it, either way).
+// A contouring curve where it replaces a corner (KRN-6), or a span of the
+// HSC spline (KRN-9), parted among the blocks it belongs to: a corner's
+// curve has two parts, the half up to the split belongs to the block before
+// the corner (in the travel direction it was built for), the rest to the
+// block after it; a spline span one part per programmed block it replaces.
+// Each part covers the programmed distance it replaces (DPS-1) and runs at
+// most at its block's programmed velocity. Backward motion and a turn
+// inside the curve run along the same curve (the rest of it, either way).
 struct ContourJoint {
   std::shared_ptr<const ContourCurve> curve;
-  double split = 0;
-  struct Half {
+  struct Part {
     size_t block = 0;
     double covered = 0;
     double programmed_velocity = 0;
     // The lift function's caps of its block (Motion::path_caps): a curve
     // into or out of a lift range keeps the range's caps on its half.
     Limits caps = Limits::none();
+    double end = 0;  // where on the curve it ends (the last: the curve's length)
   };
-  Half before, after;
+  std::vector<Part> parts;  // in the curve's direction
+  double begin(size_t part) const { return part == 0 ? 0.0 : parts[part - 1].end; }
   // What [s_from, s_to] of the curve covers of the programmed distance.
   double covered(double s_from, double s_to) const;
 };

@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "contour_builder.hpp"
+#include "hsc_spline.hpp"
 #include "machine_config.hpp"
 #include "path_segment.hpp"
 #include "ring_queue.hpp"
@@ -100,9 +101,12 @@ class LookAhead {
   double entry_velocity_after(size_t i) const;
 
   void push_piece(PathPiece&& piece);
+  void push_spline_piece(PathPiece&& piece);  // counted as a programmed block
+  void flush_spline();
 
   const MachineConfig& machine_;
   ContourBuilder builder_;
+  HscSpline hsc_;
   size_t programmed_ = 0;  // blocks pushed and not yet popped (the last piece of each)
   size_t capacity_;
   double factor_ = 1;

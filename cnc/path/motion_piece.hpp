@@ -24,12 +24,13 @@ namespace hil::cnc {
 struct Corner {
   BlockTransition transition = BlockTransition::standard;
   ContourMode mode;
+  HscMode hsc;  // the block is smoothed by the HSC spline (KRN-9) where on
 };
 
 // How the path leaves `block` into the next motion block. The lift
 // function's preparation has already turned the transitions it suppresses
 // into standard ones (prepare_lift_ranges, LIFT-3).
-inline Corner corner_after(const Block& block) { return {block.transition, block.contour}; }
+inline Corner corner_after(const Block& block) { return {block.transition, block.contour, block.hsc}; }
 
 // [from, to] of a contouring curve, run from `to` to `from` if reversed.
 struct CurveSpan {

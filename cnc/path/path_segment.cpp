@@ -13,11 +13,11 @@ size_t at(int axis) { return static_cast<size_t>(axis); }
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double two_pi = 2 * M_PI;
-// X, Y or Z, without std::string's compare (every block asks, for every axis).
+}  // namespace
+
 bool is_main_axis(const std::string& name) {
   return name.size() == 1 && (name[0] == 'X' || name[0] == 'Y' || name[0] == 'Z');
 }
-}  // namespace
 
 std::array<int, 2> arc_plane_axes(const Motion& motion, const MachineConfig& machine) {
   return {motion.plane[0] >= 0 ? motion.plane[0] : machine.axis_index("X"),
@@ -48,12 +48,14 @@ PathSegment::PathSegment(std::shared_ptr<const ContourJoint> joint, double s_fro
   // The lower velocity and caps of the halves it lies on.
   double programmed_velocity = inf;
   Limits cap = Limits::none();
-  auto lies_on = [&](const ContourJoint::Half& half) {
-    programmed_velocity = std::min(programmed_velocity, half.programmed_velocity);
-    cap = capped(cap, half.caps);
-  };
-  if (s_from < joint_->split) lies_on(joint_->before);
-  if (s_to > joint_->split) lies_on(joint_->after);
+  const std::vector<ContourJoint::Part>& parts = joint_->parts;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const bool last = i + 1 == parts.size();
+    if ((last || s_from < parts[i].end) && (i == 0 || s_to > joint_->begin(i))) {
+      programmed_velocity = std::min(programmed_velocity, parts[i].programmed_velocity);
+      cap = capped(cap, parts[i].caps);
+    }
+  }
   // In a lift range the lift's time bound counts the covered distance, of
   // which a curve covers more than its own length (it cuts the corner):
   // there the velocity counts covered distance per second (LIFT-2, LIFT-8).

@@ -14,6 +14,10 @@
 
 namespace hil::cnc {
 
+// X, Y or Z: a main axis (DPS-1, PATH_DEV); without std::string's compare
+// (every block asks, for every axis).
+bool is_main_axis(const std::string& name);
+
 // The machine axes of an arc's plane (Motion::plane; -1: X and Y, G17).
 std::array<int, 2> arc_plane_axes(const Motion& motion, const MachineConfig& machine);
 

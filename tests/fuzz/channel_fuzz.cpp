@@ -102,6 +102,7 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
     p.clear_lines.clear();
     p.has_dps_off = false;
     p.contoured = false;
+    p.hsc = false;
     for (size_t begin = 0; begin < p.text.size();) {
       const size_t end = std::min(p.text.find('\n', begin), p.text.size());
       p.lines.push_back(p.text.substr(begin, end - begin));
@@ -112,6 +113,7 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
         p.clear_lines.push_back(static_cast<int64_t>(i) + 1);
       p.has_dps_off = p.has_dps_off || p.lines[i].find("#DISTANCE PROG START OFF") != std::string::npos;
       p.contoured = p.contoured || switches_contouring_on(p.lines[i]);
+      p.hsc = p.hsc || switches_hsc_on(p.lines[i]);
     }
   }
   const GeneratedProgram& program = run.program;
@@ -388,8 +390,9 @@ FuzzRun run_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
         fail({"dist_prog_start", k, "", "dist_prog_start change (mm) in one cycle", change, dps_step_limit, line,
               "more than the path can cover in one cycle"});
       // A contouring curve a little longer than the blocks' parts it
-      // replaces: 1e-4 of it in 1000 contoured programs (docs/CONTOURING.md).
-      const double slower = program.contoured ? 1e-3 : 1e-6;
+      // replaces: 1e-4 of it in 1000 contoured programs (docs/CONTOURING.md);
+      // an HSC spline longer than the chords it smooths (GeneratedProgram::hsc).
+      const double slower = program.hsc ? 2e-2 : program.contoured ? 1e-3 : 1e-6;
       if (dps_counts_all && !repositioning && !approach_behind && backward == previous_backward &&
           std::abs(change) < chord * (1 - slower) - tol)
         fail({"dist_prog_start", k, "", "dist_prog_start change (mm) in one cycle", change, chord, line,

@@ -21,6 +21,7 @@ const char* to_string(ProgramKind kind) {
     case ProgramKind::commands: return "commands";
     case ProgramKind::contour: return "contour";
     case ProgramKind::lift: return "lift";
+    case ProgramKind::hsc: return "hsc";
   }
   return "?";
 }
@@ -82,20 +83,21 @@ constexpr int step_directions[][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}
 enum Item {
   long_line, short_line, tiny_line, rapid, steps, arc_random, tangent_chain, full_circle, helix, tiny_arc,
   g91_section, feed_change, m_alone, m_with_motion, dwell, marker, dps_command, slope,
-  contour_mode, chord_polyline, near_collinear, lift_range, item_count
+  contour_mode, chord_polyline, near_collinear, lift_range, hsc_switch, item_count
 };
 
 // Weights of the items per program kind (columns in Item order).
 constexpr double weights[][item_count] = {
     //        long short tiny rapid steps arc  chain full helix tinyarc g91 feed m   m+mv dwell mark dps slope
-    //        contour-mode chord-polyline near-collinear lift-range
-    /*mixed*/ {2, 2, 1, 1, 1.5, 1.5, 1.5, 0.5, 0.5, 0.5, 1, 1, 0.7, 0.7, 0.5, 0.7, 0.6, 0.5, 0, 0, 0, 0},
-    /*lines*/ {3, 3, 1, 1.5, 1, 0, 0, 0, 0, 0, 1, 1.5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-    /*arcs*/ {0, 1, 0, 0, 0, 3, 3, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-    /*steps*/ {0, 1, 2, 0, 6, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
-    /*commands*/ {1, 2, 0, 0, 0.5, 0.5, 0, 0, 0, 0, 0.3, 0.5, 2, 2, 1.5, 2, 1.5, 0, 0, 0, 0, 0},
-    /*contour*/ {1, 2, 1, 0.5, 1.5, 1, 1.5, 0.3, 0.3, 0.3, 0.5, 1, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3, 2.5, 4, 2, 0},
-    /*lift*/ {1.5, 1.5, 0.5, 1, 0.5, 1, 0.5, 0.2, 0.3, 0.3, 0.3, 1, 0.5, 0.5, 0.3, 0, 0.3, 0.3, 0.7, 0.3, 0, 4},
+    //        contour-mode chord-polyline near-collinear lift-range hsc-switch
+    /*mixed*/ {2, 2, 1, 1, 1.5, 1.5, 1.5, 0.5, 0.5, 0.5, 1, 1, 0.7, 0.7, 0.5, 0.7, 0.6, 0.5, 0, 0, 0, 0, 0},
+    /*lines*/ {3, 3, 1, 1.5, 1, 0, 0, 0, 0, 0, 1, 1.5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    /*arcs*/ {0, 1, 0, 0, 0, 3, 3, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    /*steps*/ {0, 1, 2, 0, 6, 0, 0, 0, 0, 0, 0.5, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+    /*commands*/ {1, 2, 0, 0, 0.5, 0.5, 0, 0, 0, 0, 0.3, 0.5, 2, 2, 1.5, 2, 1.5, 0, 0, 0, 0, 0, 0},
+    /*contour*/ {1, 2, 1, 0.5, 1.5, 1, 1.5, 0.3, 0.3, 0.3, 0.5, 1, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3, 2.5, 4, 2, 0, 0},
+    /*lift*/ {1.5, 1.5, 0.5, 1, 0.5, 1, 0.5, 0.2, 0.3, 0.3, 0.3, 1, 0.5, 0.5, 0.3, 0, 0.3, 0.3, 0.7, 0.3, 0, 4, 0},
+    /*hsc*/ {1, 1.5, 0.5, 0.7, 0.5, 1, 0.7, 0.2, 0.2, 0.2, 0.3, 1, 0.3, 0.3, 0.3, 0.3, 0.3, 0.2, 0.3, 6, 2, 0, 1.5},
 };
 
 // What may stand inside a lift range: no motion of the lift axis Z (LIFT-6).
@@ -124,6 +126,10 @@ class Generator {
       contour_switch(true);
       emit(rng_.chance(0.8) ? "G261" : "#CONTOUR MODE ON");
     }
+    if (options_.kind == ProgramKind::hsc) {
+      decimals_ = rng_.chance(0.5) ? 4 : 3;
+      hsc_command(true);
+    }
     const int items = static_cast<int>(rng_.integer(options_.min_items, options_.max_items));
     for (int i = 0; i < items; ++i) item(pick_item(false));
     if (!absolute_) emit("G90");
@@ -134,7 +140,10 @@ class Generator {
     out_.end_position[iy_] = pos_[1];
     out_.end_position[iz_] = pos_[2];
     out_.dist_prog_start_end_mm = dps_;
-    for (const std::string& line : out_.lines) out_.contoured = out_.contoured || switches_contouring_on(line);
+    for (const std::string& line : out_.lines) {
+      out_.contoured = out_.contoured || switches_contouring_on(line);
+      out_.hsc = out_.hsc || switches_hsc_on(line);
+    }
     return out_;
   }
 
@@ -264,6 +273,7 @@ class Generator {
       case chord_polyline: polyline(); break;
       case near_collinear: nearly_straight(); break;
       case lift_range: lift(); break;
+      case hsc_switch: hsc_command(false); break;
       case item_count: break;
     }
   }
@@ -568,6 +578,28 @@ class Generator {
     }
   }
 
+  // KRN-9: #HSC ON with parameters, now and then OFF, ON alone, or the
+  // parameters alone.
+  void hsc_command(bool on) {
+    const double dev = rng_.log_uniform(0.001, 0.5);
+    std::string list = "[BSPLINE PATH_DEV=" + num(std::round(dev * 1e6) / 1e6);
+    if (rng_.chance(0.7)) list += " MERGE=" + std::string(rng_.chance(0.7) ? "1" : "0");
+    if (rng_.chance(0.2)) list += " MAX_ANGLE=" + num(std::round(rng_.uniform(1, 90)));
+    if (rng_.chance(0.15)) list += " AUTO_OFF_PATH=1";
+    if (rng_.chance(0.15)) list += " AUTO_OFF_G00=1";
+    if (rng_.chance(0.15)) list += " AUTO_OFF_G60=1";
+    if (rng_.chance(0.15)) list += " MAX_PATH_LENGTH=" + num(std::round(rng_.log_uniform(0.01, 5) * 1e4) / 1e4);
+    if (rng_.chance(0.1)) list += " TRACK_DEV=0";
+    list += "]";
+    const size_t which = on ? 0 : rng_.pick({3.0, 1.5, 1.0, 1.0});
+    switch (which) {
+      case 0: emit("#HSC ON " + list); break;
+      case 1: emit("#HSC OFF"); break;
+      case 2: emit("#HSC ON"); break;
+      default: emit("#HSC " + list); break;
+    }
+  }
+
   // A CAM-style polyline: chords of a circle (or of a helix), from tiny to
   // half a millimetre, often at a high feed, now and then ending in a
   // reversal.
@@ -585,7 +617,9 @@ class Generator {
     const double cx = pos_[0] - side * r * std::sin(heading), cy = pos_[1] + side * r * std::cos(heading);
     const double a0 = std::atan2(pos_[1] - cy, pos_[0] - cx), step = side * 2 * std::asin(chord / (2 * r));
     for (int k = 1; k <= n; ++k) {
-      const Vec want{cx + r * std::cos(a0 + k * step), cy + r * std::sin(a0 + k * step), pos_[2] + dz};
+      Vec want{cx + r * std::cos(a0 + k * step), cy + r * std::sin(a0 + k * step), pos_[2] + dz};
+      if (decimals_ > 0)  // as CAM writes them (KRN-9)
+        for (double& w : want) w = std::round(w * std::pow(10.0, decimals_)) / std::pow(10.0, decimals_);
       line_to(want, 1);
     }
     if (rng_.chance(0.25)) line_by(direction(false), rng_.log_uniform(0.001, 1), 1);  // a corner
@@ -641,15 +675,18 @@ class Generator {
   std::string transition_next_;  // G61 or G60 for the next motion line (KRN-6)
   bool counting_ = true;
   double dps_ = 0;
+  int decimals_ = 0;  // polylines rounded to this many decimals (hsc kind); 0: not rounded
 };
 
 }  // namespace
 
 bool switches_contouring_on(const std::string& line) {
-  for (const char* on : {"G261", "G61", "#CONTOUR MODE ON"})
+  for (const char* on : {"G261", "G61", "#CONTOUR MODE ON", "#HSC ON"})
     if (line.find(on) != std::string::npos) return true;
   return false;
 }
+
+bool switches_hsc_on(const std::string& line) { return line.find("#HSC ON") != std::string::npos; }
 
 GeneratedProgram generate_program(uint64_t seed, const ProgramOptions& options, const MachineConfig& machine) {
   return Generator(seed, options, machine).run();

@@ -39,12 +39,17 @@ enum class ProgramKind {
   // arcs, M functions, dwells and markers; the machine lifts time-based
   // on even seeds, path-based on odd ones. Chosen by name only.
   lift,
+  // KRN-9: #HSC ON [BSPLINE ..] (PATH_DEV, MERGE, MAX_ANGLE, AUTO_OFF_*,
+  // MAX_PATH_LENGTH), #HSC OFF, over CAM polylines rounded to 3 or 4
+  // decimals, near-collinear joints, corners and reversals, with the other
+  // items (G00, arcs, M functions, dwells, G60) ending splines. By name only.
+  hsc,
 };
 constexpr ProgramKind all_program_kinds[] = {ProgramKind::mixed, ProgramKind::lines, ProgramKind::arcs,
                                              ProgramKind::steps, ProgramKind::commands};
 constexpr ProgramKind named_program_kinds[] = {ProgramKind::mixed,    ProgramKind::lines,   ProgramKind::arcs,
                                                ProgramKind::steps,    ProgramKind::commands, ProgramKind::contour,
-                                               ProgramKind::lift};
+                                               ProgramKind::lift,     ProgramKind::hsc};
 const char* to_string(ProgramKind kind);
 std::optional<ProgramKind> parse_program_kind(const std::string& name);
 
@@ -72,6 +77,10 @@ struct GeneratedProgram {
   // dist_prog_start counts the programmed distance the curve replaces, so
   // where the curve is longer it grows slower than the path moves.
   bool contoured = false;
+  // An HSC spline somewhere (KRN-9): over a polyline that bends, the spline
+  // is longer than its chords (an arc over chords turning by θ each:
+  // θ / (2 sin(θ/2)), 1.1 % for the generator's sharpest, 29°).
+  bool hsc = false;
   // Lift ranges (LIFT-1): the last motion block's end is not the program's
   // end on the lift axis, which lands on POS after it; a short cut past a
   // lift command is refused (DDTG-8: 51016) and ends the run in ERROR.
@@ -82,8 +91,9 @@ struct GeneratedProgram {
   double path_length_mm = 0;         // sum of block lengths
 };
 
-// G261, G61 or #CONTOUR MODE ON on the line (KRN-6).
+// G261, G61, #CONTOUR MODE ON (KRN-6) or #HSC ON (KRN-9) on the line.
 bool switches_contouring_on(const std::string& line);
+bool switches_hsc_on(const std::string& line);
 
 GeneratedProgram generate_program(uint64_t seed, const ProgramOptions& options, const MachineConfig& machine);
 

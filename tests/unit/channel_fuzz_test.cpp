@@ -118,6 +118,21 @@ TEST_CASE("KRN-6 KRN-3 KRN-5 DPS-1 channel fuzz, contour kind: polynomial contou
   CHECK(r.short_cuts > r.runs / 10);
 }
 
+TEST_CASE("KRN-9 KRN-3 KRN-5 DPS-1 ISC-3 DDTG-1 channel fuzz, hsc kind: HSC splines under the random PLC keep "
+          "every axis' limits",
+          "[fuzz][hsc]") {
+  // #HSC ON [BSPLINE ..] with its parameters, #HSC OFF, over CAM polylines
+  // rounded to 3 or 4 decimals, G00, arcs, M functions, G60 and G261 among
+  // them; feed hold, override, short cuts, insert stops, backward motion
+  // (docs/HSC.md).
+  FuzzOptions options;
+  options.kind = ProgramKind::hsc;
+  const SeedRange r = run_seeds(1, 300, options, "hsc");
+  CHECK(r.failed == 0);
+  CHECK(r.backward > r.runs / 10);
+  CHECK(r.short_cuts > r.runs / 10);
+}
+
 TEST_CASE("LIFT-1 LIFT-2 LIFT-3 LIFT-5 LIFT-8 channel fuzz, lift kind: both lift methods under the random PLC keep "
           "every axis' limits (the lift axis' jerk within j_max, its acceleration in the overload range where the "
           "text allows it, its drive below P-AXIS-00442) and land on POS",

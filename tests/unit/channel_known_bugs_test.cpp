@@ -485,6 +485,14 @@ TEST_CASE("KRN-3 KRN-6 issue 36: near-tangent kinks three cycles apart, crossed 
   check_seeds(fuzz::ProgramKind::mixed, {26001680});
 }
 
+TEST_CASE("KRN-9 KRN-5 DPS-1 a restart standing where an HSC span begins finishes its block", "[channel][hsc][fuzz]") {
+  // AC (docs/FUZZ.md): restarted after an insert stop on the start of an
+  // HSC span, going backward, nothing was left to push and the block was
+  // not finished; the turn there ran straight to the next block's end,
+  // 1.5e-3 mm of dist_prog_start short (hsc 31002326, 30001651).
+  check_seeds(fuzz::ProgramKind::hsc, {31002326, 30001651});
+}
+
 TEST_CASE("KRN-5 DPS-1 a turn on an arc whose end radius is off its start radius goes on along the arc",
           "[channel][fuzz]") {
   // W (docs/FUZZ.md): after a block search re-decoded an incremental block

@@ -30,7 +30,7 @@ MotionPiece piece_of(const Motion& motion, double covered) {
   piece.motion = motion;
   piece.covered = covered;
   piece.origin = 0;
-  piece.out = Corner{BlockTransition::contour, {}};
+  piece.out = Corner{BlockTransition::contour, {}, {}};
   piece.whole_block = piece.block_stop = true;
   return piece;
 }
@@ -90,19 +90,19 @@ TEST_CASE("ISC-3 KRN-6 a span of a contouring curve splits on the curve, each ha
   const std::shared_ptr<const ContourJoint> joint = corner_curve(machine);
   REQUIRE(joint);
   for (const bool reversed : {false, true}) {
-    const CurveSpan span{joint, 0, joint->split, reversed};
+    const CurveSpan span{joint, 0, joint->parts[0].end, reversed};
     const std::optional<MotionPiece> piece = MotionPiece::on_curve(Block{}, 0, span, machine);
     REQUIRE(piece);
     CHECK_FALSE(piece->along_chord);
     CHECK_FALSE(piece->out);
     const PathSegment segment = piece->segment(machine);
     CHECK(segment.is_contour_curve());
-    CHECK(piece->covered == Approx(joint->covered(0, joint->split)));
+    CHECK(piece->covered == Approx(joint->covered(0, joint->parts[0].end)));
     const double s = segment.length() / 3;
     const auto [first, second] = piece->split_at(s, segment, 1.0);
     REQUIRE(first.curve);
     REQUIRE(second.curve);
-    const double at = reversed ? joint->split - s : s;
+    const double at = reversed ? joint->parts[0].end - s : s;
     CHECK((reversed ? first.curve->from : first.curve->to) == Approx(at));
     CHECK((reversed ? second.curve->to : second.curve->from) == Approx(at));
     CHECK(first.covered + second.covered == Approx(piece->covered));

@@ -1,0 +1,332 @@
+// KRN-9 HSC smoothing: #HSC ON/OFF [BSPLINE ..] decoded as the programming
+// manual defines it, the spline through CAM polylines (cnc/path/hsc_spline),
+// and CAM chord circles through the channel (docs/HSC.md).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "channel.hpp"
+#include "channel_runner.hpp"
+#include "decoder.hpp"
+#include "hsc_spline.hpp"
+#include "limit_check.hpp"
+#include "test_machine.hpp"
+
+using namespace hil;
+using namespace hil::cnc;
+
+namespace {
+
+DecodedProgram decode_text(const std::string& text) {
+  return decode_program(text, test::xyz_machine(), std::vector<double>(3, 0.0));
+}
+
+std::string rounded(double v, int decimals) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  return text;
+}
+
+// A circle of `chords` G01 chords of 0.1 mm on R 15.9 from (R, 0), its points
+// written with `decimals` decimals as CAM systems do.
+std::string chord_circle(int chords, int decimals, const std::string& head) {
+  const double radius = 15.9, step = 2 * std::asin(0.1 / (2 * radius));
+  std::string program = "N1 G90 G00 X15.9 Y0 Z0\n" + head;
+  for (int c = 1; c <= chords; ++c)
+    program += std::string(c == 1 ? "G01 " : "") + "X" + rounded(radius * std::cos(c * step), decimals) + " Y" +
+               rounded(radius * std::sin(c * step), decimals) + (c == 1 ? " F6000" : "") + "\n";
+  return program + "M30\n";
+}
+
+// The motion blocks' end points of a decoded program (the first: its start).
+std::vector<std::vector<double>> polyline(const DecodedProgram& p) {
+  std::vector<std::vector<double>> points;
+  for (const Block& b : p.blocks) {
+    if (!b.has_motion || b.motion.type != MotionType::linear) continue;
+    if (points.empty()) points.push_back(b.motion.start);
+    points.push_back(b.motion.end);
+  }
+  return points;
+}
+
+double distance_to_polyline(const std::vector<double>& q, const std::vector<std::vector<double>>& points,
+                            size_t from, size_t to) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t i = from; i + 1 < std::min(to, points.size()); ++i) {
+    const std::vector<double>& a = points[i];
+    const std::vector<double>& b = points[i + 1];
+    double along = 0, size = 0;
+    for (size_t k = 0; k < 3; ++k) {
+      along += (q[k] - a[k]) * (b[k] - a[k]);
+      size += (b[k] - a[k]) * (b[k] - a[k]);
+    }
+    const double u = size > 0 ? std::clamp(along / size, 0.0, 1.0) : 0.0;
+    double d = 0;
+    for (size_t k = 0; k < 3; ++k) d += std::pow(q[k] - a[k] - u * (b[k] - a[k]), 2);
+    best = std::min(best, std::sqrt(d));
+  }
+  return best;
+}
+
+struct CircleRun {
+  double moving_s = 0;
+  double max_deviation = 0;  // from the programmed polyline
+  logger::CheckReport check;
+};
+
+CircleRun run_chord_circle(int chords, int decimals, const std::string& head) {
+  const MachineConfig m = test::xyz_machine();
+  const std::string program = chord_circle(chords, decimals, head);
+  const std::vector<std::vector<double>> points = polyline(decode_text(program));
+  Channel channel(m, program);
+  logger::LimitChecker checker(m);
+  CircleRun r;
+  int64_t moving = 0;
+  size_t near = 0;  // the polyline point nearest the path so far
+  test::run_program(channel, &checker, [&](int64_t, const HliState& s, HliControl&) {
+    const auto& sp = channel.setpoints();
+    if (std::hypot(sp[0].velocity, sp[1].velocity) > 0 && s.block_count_r >= 3) ++moving;
+    if (s.channel_state != ChannelState::active || s.block_count_r < 3) return;
+    const std::vector<double> q{sp[0].position, sp[1].position, sp[2].position};
+    while (near + 1 < points.size() && std::hypot(points[near + 1][0] - q[0], points[near + 1][1] - q[1]) <
+                                           std::hypot(points[near][0] - q[0], points[near][1] - q[1]))
+      ++near;
+    r.max_deviation =
+        std::max(r.max_deviation, distance_to_polyline(q, points, near >= 3 ? near - 3 : 0, near + 4));
+  });
+  r.moving_s = static_cast<double>(moving) * 1e-3;
+  r.check = checker.finish();
+  return r;
+}
+
+// The pieces an HscSpline makes of a decoded program's G01 blocks.
+std::vector<PathPiece> spline_pieces(const DecodedProgram& p, const MachineConfig& m) {
+  HscSpline spline(m);
+  std::vector<PathPiece> pieces;
+  for (size_t k = 0; k < p.blocks.size(); ++k) {
+    const Block& b = p.blocks[k];
+    if (!b.has_motion || b.motion.type != MotionType::linear) continue;
+    const PathSegment segment(b.motion, m);
+    const MotionPiece piece = MotionPiece::of_block(b, k, segment);
+    REQUIRE(HscSpline::smooths(piece, segment));
+    for (PathPiece& out : spline.add(piece, segment, false)) pieces.push_back(std::move(out));
+  }
+  for (PathPiece& out : spline.flush()) pieces.push_back(std::move(out));
+  return pieces;
+}
+
+double norm_of_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(sum);
+}
+
+}  // namespace
+
+TEST_CASE("KRN-9 decoder: #HSC ON [BSPLINE ..] sets the modal HSC parameters, the manual's defaults otherwise",
+          "[hsc][decoder]") {
+  const DecodedProgram p = decode_text(
+      "N10 G01 X1 F600\n"
+      "N20 #HSC ON\n"
+      "N30 X2\n"
+      "N40 #HSC [BSPLINE PATH_DEV=0.05 TRACK_DEV=2 MERGE=1 MAX_ANGLE=20 MAX_PATH_LENGTH=3 AUTO_OFF_PATH=1]\n"
+      "N50 X3\n"
+      "N60 #HSC OFF\n"
+      "N70 X4\n"
+      "N80 #HSC ON [BSPLINE, PATH_DEV = 0.5]\n"
+      "N90 X5\n"
+      "M30\n");
+  REQUIRE_FALSE(p.error);
+  std::vector<HscMode> modes;
+  for (const Block& b : p.blocks)
+    if (b.has_motion) modes.push_back(b.hsc);
+  REQUIRE(modes.size() == 5);
+  CHECK_FALSE(modes[0].on);
+  CHECK(modes[1].on);
+  CHECK(modes[1].path_dev == 0.2);  // the manual's default
+  CHECK(modes[1].track_dev == 5);
+  CHECK_FALSE(modes[1].merge);
+  CHECK(modes[2].on);  // parameters alone keep ON
+  CHECK(modes[2].path_dev == 0.05);
+  CHECK(modes[2].track_dev == 2);
+  CHECK(modes[2].merge);
+  CHECK(modes[2].max_angle == 20);
+  CHECK(modes[2].max_path_length == 3);
+  CHECK(modes[2].auto_off_path);
+  CHECK_FALSE(modes[3].on);
+  CHECK(modes[4].on);
+  CHECK(modes[4].path_dev == 0.5);
+  CHECK(modes[4].merge);  // modal: kept from N40
+}
+
+TEST_CASE("KRN-9 decoder: #HSC without BSPLINE first, unknown keys and values out of range are refused with the line",
+          "[hsc][decoder]") {
+  const struct {
+    const char* line;
+    const char* message;
+  } cases[] = {
+      {"N20 #HSC ON [PATH_DEV=0.1]", "BSPLINE must be the first keyword"},
+      {"N20 #HSC ON [BSPLINE SMOOTH=1]", "unknown parameter 'SMOOTH'"},
+      {"N20 #HSC ON [BSPLINE MERGE=2]", "MERGE must be 0 or 1"},
+      {"N20 #HSC ON [BSPLINE PATH_DEV=-1]", "PATH_DEV must be >= 0"},
+      {"N20 #HSC ON [BSPLINE MAX_ANGLE=200]", "MAX_ANGLE must be >= 0 and <= 180"},
+      {"N20 #HSC ON [BSPLINE MERGE]", "'MERGE' needs a value"},
+      {"N20 #HSC OFF [BSPLINE]", "#HSC OFF takes no parameters"},
+      {"N20 #HSC", "#HSC needs ON, OFF or [BSPLINE ..]"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.line);
+    const DecodedProgram p = decode_text(std::string("N10 G01 X1 F600\n") + c.line + "\nN30 X2\nM30\n");
+    REQUIRE(p.error);
+    CHECK(p.error->nc_line == 2);
+    CHECK(p.error->block_nr == 20);
+    CHECK_THAT(p.error->message, Catch::Contains(c.message));
+  }
+}
+
+TEST_CASE("KRN-9 decoder: AUTO_OFF_G00 / AUTO_OFF_G60 switch HSC off at a G00 block / an exact stop; without them "
+          "HSC stays on",
+          "[hsc][decoder]") {
+  auto modes_of = [](const std::string& head) {
+    const DecodedProgram p =
+        decode_text("N10 G01 X1 F600\n" + head + "\nN30 X2\nN40 G00 X3\nN50 G01 X4\nN60 G60 X5\nN70 X6\nM30\n");
+    REQUIRE_FALSE(p.error);
+    std::vector<bool> on;
+    for (const Block& b : p.blocks)
+      if (b.has_motion) on.push_back(b.hsc.on);
+    return on;
+  };
+  CHECK(modes_of("N20 #HSC ON") == std::vector<bool>{false, true, true, true, true, true});
+  CHECK(modes_of("N20 #HSC ON [BSPLINE AUTO_OFF_G00=1]") == std::vector<bool>{false, true, false, false, false, false});
+  CHECK(modes_of("N20 #HSC ON [BSPLINE AUTO_OFF_G60=1]") == std::vector<bool>{false, true, true, true, false, false});
+}
+
+TEST_CASE("KRN-9 HSC spline through a chord circle of CAM's 4 decimals: from its first to its last programmed point, "
+          "tangent and curvature continuous, within PATH_DEV, its curvature rate far below the chords' rounding",
+          "[hsc]") {
+  const MachineConfig m = test::xyz_machine();
+  std::vector<double> rates;
+  for (const bool merge : {false, true}) {
+    INFO("MERGE=" << merge);
+    const DecodedProgram p = decode_text(chord_circle(
+        400, 4, std::string("#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=") + (merge ? "1" : "0") + "]\n"));
+    REQUIRE_FALSE(p.error);
+    const std::vector<std::vector<double>> points = polyline(p);
+    const std::vector<PathPiece> pieces = spline_pieces(p, m);
+    REQUIRE(pieces.size() == 400);
+    double covered = 0, polyline_length = 0, max_rate = 0, max_deviation = 0;
+    for (size_t i = 0; i + 1 < points.size(); ++i) polyline_length += norm_of_difference(points[i], points[i + 1]);
+    for (size_t i = 0; i < pieces.size(); ++i) {
+      const PathSegment& s = pieces[i].segment;
+      REQUIRE(s.is_contour_curve());
+      CHECK(pieces[i].begins_block);
+      CHECK(pieces[i].ends_block);
+      covered += s.covered_distance();
+      if (i > 0) {  // continuous in position, tangent and curvature
+        const PathSegment& before = pieces[i - 1].segment;
+        CHECK(norm_of_difference(before.end(), s.position(0)) < 1e-9);
+        CHECK(norm_of_difference(before.tangent(before.length()), s.tangent(0)) < 1e-9);
+        CHECK(norm_of_difference(before.curvature(before.length()), s.curvature(0)) < 1e-6);
+      }
+      const ContourCurve::AxisBounds b = s.joint()->curve->bounds(s.curve_position(0), s.curve_position(s.length()));
+      max_rate = std::max(max_rate, b.curvature_rate_norm);
+      for (int k = 0; k <= 4; ++k)
+        max_deviation = std::max(max_deviation, distance_to_polyline(s.position(s.length() * k / 4), points,
+                                                                    i >= 30 ? i - 30 : 0, i + 30));
+    }
+    // The spline's ends are programmed points, exactly.
+    CHECK(pieces.front().segment.position(0) == points.front());
+    CHECK(pieces.back().segment.end() == points.back());
+    CHECK(covered == Approx(polyline_length).epsilon(1e-12));
+    CHECK(max_deviation <= 0.01);
+    // A circle's is 0; one corner curve per chord (G261) swings by the
+    // chords' rounding, 1e-3 rad over 0.1 mm twice: ~1 /mm^2. Knots at
+    // every chord (MERGE=0) keep much of it; spans of 2 mm do not.
+    rates.push_back(max_rate);
+  }
+  INFO("largest |dk/ds|: MERGE=0 " << rates[0] << ", MERGE=1 " << rates[1] << " /mm^2");
+  CHECK(rates[1] < 0.01);
+  CHECK(rates[1] < rates[0] / 10);
+}
+
+TEST_CASE("KRN-9 HSC keeps a bend sharper than MAX_ANGLE (default 30 degrees) as a corner, and ends the spline "
+          "there at the programmed point",
+          "[hsc]") {
+  const MachineConfig m = test::xyz_machine();
+  std::string program = "N1 G01 X0 Y0 F6000\n#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n";
+  for (int i = 1; i <= 30; ++i) program += "X" + rounded(0.1 * i, 4) + " Y0\n";
+  for (int i = 1; i <= 30; ++i) program += "X3 Y" + rounded(0.1 * i, 4) + "\n";
+  program += "M30\n";
+  const DecodedProgram p = decode_text(program);
+  REQUIRE_FALSE(p.error);
+  const std::vector<PathPiece> pieces = spline_pieces(p, m);
+  REQUIRE(pieces.size() == 60);
+  const PathSegment& before = pieces[29].segment;
+  const PathSegment& after = pieces[30].segment;
+  CHECK(norm_of_difference(before.end(), {3, 0, 0}) < 1e-12);
+  CHECK(norm_of_difference(after.position(0), {3, 0, 0}) < 1e-12);
+  CHECK(before.tangent(before.length())[0] == Approx(1).margin(1e-6));
+  CHECK(after.tangent(0)[1] == Approx(1).margin(1e-6));
+  // With MAX_ANGLE=100 the same corner is rounded off within PATH_DEV.
+  const DecodedProgram rounded_corner = decode_text(
+      std::string(program).replace(program.find("MERGE=1]"), 8, "MERGE=1 MAX_ANGLE=100]"));
+  const std::vector<PathPiece> through = spline_pieces(rounded_corner, m);
+  const std::vector<std::vector<double>> points = polyline(rounded_corner);
+  double max_deviation = 0;
+  for (const PathPiece& piece : through)
+    for (int k = 0; k <= 8; ++k)
+      max_deviation = std::max(max_deviation, distance_to_polyline(piece.segment.position(piece.segment.length() * k / 8),
+                                                                  points, 0, points.size()));
+  CHECK(max_deviation <= 0.01);
+}
+
+TEST_CASE("KRN-9 KRN-3 issue 36: CAM chord circles of 4 and 3 decimals with #HSC ON [BSPLINE MERGE=1] run within "
+          "1.10 of the ideal time, within PATH_DEV, every axis limit held",
+          "[hsc]") {
+  const int chords = 3000;  // 300 mm at F6000: 3 s
+  const double ideal_s = chords * 0.1 / 100.0;
+  for (const int decimals : {4, 3}) {
+    const CircleRun r = run_chord_circle(chords, decimals, "#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n");
+    INFO(decimals << " decimals: " << r.moving_s << " s, ideal " << ideal_s << " s, deviation " << r.max_deviation);
+    CHECK(r.check.violations.empty());
+    CHECK(r.moving_s <= 1.10 * ideal_s + 0.3);  // + accelerating from and braking to rest
+    CHECK(r.max_deviation <= 0.01);
+  }
+}
+
+TEST_CASE("KRN-9 KRN-6 an exact stop at the end of a block before a spline and at the end of a spline's block "
+          "stands the path there",
+          "[hsc]") {
+  // G60 on the line before the spline, which goes on straight ahead: the
+  // contour builder closes the line, the spline takes the next block and
+  // must still start from standstill. A G60 on a block inside the spline
+  // ends it there, standing.
+  std::string program = "N10 G01 X5 Y0 F6000\nN20 G60 X10 Y0\n#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n";
+  for (int i = 1; i <= 20; ++i)
+    program += "X" + rounded(10 + 0.1 * i, 4) + " Y" + rounded(-0.0001 * i * i, 4) + "\n";
+  program += "G60 X12.1 Y-0.042\n";
+  for (int i = 1; i <= 10; ++i) program += "X" + rounded(12.1 + 0.1 * i, 4) + " Y" + rounded(-0.042 - 0.004 * i, 4) + "\n";
+  program += "M30\n";
+  const MachineConfig m = test::xyz_machine();
+  Channel channel(m, program);
+  logger::LimitChecker checker(m);
+  // The lowest path velocity within 0.01 mm of either point: the cycles
+  // around a stop there sample the path braking to it and starting again.
+  double at_line_end = 1e9, at_g60 = 1e9;
+  test::run_program(channel, &checker, [&](int64_t, const HliState&, HliControl&) {
+    const auto& sp = channel.setpoints();
+    const double v = std::hypot(sp[0].velocity, sp[1].velocity);
+    if (std::hypot(sp[0].position - 10, sp[1].position) < 0.01) at_line_end = std::min(at_line_end, v);
+    if (std::hypot(sp[0].position - 12.1, sp[1].position + 0.042) < 0.01) at_g60 = std::min(at_g60, v);
+  });
+  CHECK(checker.finish().violations.empty());
+  INFO("lowest path velocity near the line's end " << at_line_end << ", near the G60 " << at_g60 << " mm/s");
+  // Within 0.01 mm of a stop a jerk-limited path (j 40,000 mm/s^3) runs
+  // below 2.6 mm/s; passed without a stop, both joints run at tens of mm/s.
+  CHECK(at_line_end < 3);
+  CHECK(at_g60 < 3);
+}
