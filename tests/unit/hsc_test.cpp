@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -295,6 +296,49 @@ TEST_CASE("KRN-9 KRN-3 issue 36: CAM chord circles of 4 and 3 decimals with #HSC
     CHECK(r.check.violations.empty());
     CHECK(r.moving_s <= 1.10 * ideal_s + 0.3);  // + accelerating from and braking to rest
     CHECK(r.max_deviation <= 0.01);
+  }
+}
+
+TEST_CASE("KRN-9 TRACK_DEV bounds the miss of a tracking axis (C) on the spline; 0 does not check it", "[hsc]") {
+  // XY chords of a circle while C turns by a varying step (a tool axis
+  // following a CAM surface): the spline interpolates C with X and Y, and
+  // misses C's polyline between the knots by a little.
+  const MachineConfig m = test::xyzc_machine();
+  auto pieces_with = [&](const std::string& track_dev) {
+    std::string program = "N1 G00 X15.9 Y0 C0\n#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1 TRACK_DEV=" + track_dev + "]\n";
+    const double step = 2 * std::asin(0.1 / (2 * 15.9));
+    for (int c = 1; c <= 200; ++c)
+      program += (c == 1 ? "G01 X" : "X") + rounded(15.9 * std::cos(c * step), 4) + " Y" +
+                 rounded(15.9 * std::sin(c * step), 4) + " C" + rounded(0.5 * c + 3 * std::sin(c / 7.0), 4) +
+                 (c == 1 ? " F6000\n" : "\n");
+    program += "M30\n";
+    const DecodedProgram p = decode_program(program, m, std::vector<double>(m.axes.size(), 0.0));
+    REQUIRE_FALSE(p.error);
+    return spline_pieces(p, m);
+  };
+  auto curves = [](const std::vector<PathPiece>& pieces) {
+    return std::count_if(pieces.begin(), pieces.end(), [](const PathPiece& p) { return p.segment.is_contour_curve(); });
+  };
+  const std::vector<PathPiece> unchecked = pieces_with("0"), loose = pieces_with("5"), tight = pieces_with("0.00001");
+  REQUIRE(unchecked.size() == 200);
+  CHECK(curves(unchecked) == 200);
+  CHECK(curves(loose) == 200);
+  // Spans halved down to single blocks, and those that still miss by more
+  // run as their programmed lines.
+  CHECK(curves(tight) < 200);
+  const int c_axis = m.axis_index("C");
+  REQUIRE(c_axis >= 0);
+  for (const PathPiece& piece : tight) {
+    if (!piece.segment.is_contour_curve()) continue;
+    const std::vector<double> a = piece.segment.position(0), b = piece.segment.end();
+    const auto c = static_cast<size_t>(c_axis);
+    for (int k = 1; k < 8; ++k) {
+      const double share = k / 8.0;
+      const std::vector<double> q = piece.segment.position(piece.segment.length() * share);
+      // Within TRACK_DEV of the block's own C line (plus what the
+      // sampling between the check's points may miss).
+      CHECK(std::abs(q[c] - (a[c] + share * (b[c] - a[c]))) < 0.0005);
+    }
   }
 }
 
