@@ -41,6 +41,9 @@ struct Result {
   std::vector<double> joint_min_velocity;  // per watched point: lowest path velocity within 1 mm of it
   double time_s = 0, ideal_s = 0, max_deviation = 0, min_velocity_in_contour = 1e300;
   double plan_us_per_block = 0;
+  // Wall time of one channel cycle (decode, plan, interpolate): the 50th,
+  // 99th percentile and the largest, µs.
+  double cycle_p50_us = 0, cycle_p99_us = 0, cycle_max_us = 0;
   logger::CheckReport check;
 };
 
@@ -59,8 +62,11 @@ Result run(const MachineConfig& machine, const std::string& program, const std::
   int64_t k = 0, first_moving = -1, last_moving = -1, first_contour = -1;
   size_t seg = 0;
   const auto t0 = std::chrono::steady_clock::now();
+  std::vector<double> cycle_us;
   for (; k < 2000000; ++k) {
+    const auto before = std::chrono::steady_clock::now();
     channel.step(k, control);
+    cycle_us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - before).count());
     control.program_start.command_w = false;
     const auto& sp = channel.setpoints();
     for (size_t i = 0; i < sp.size(); ++i) checker.add_setpoint(static_cast<int>(i), k, sp[i].position);
@@ -99,6 +105,13 @@ Result run(const MachineConfig& machine, const std::string& program, const std::
   r.time_s = (last_moving - (first_contour >= 0 ? first_contour : first_moving) + 1) * machine.cycle_time_s();
   r.ideal_s = length / feed;
   r.plan_us_per_block = wall * 1e6 / static_cast<double>(blocks);
+  if (!cycle_us.empty()) {
+    std::sort(cycle_us.begin(), cycle_us.end());
+    const auto at = [&](double share) { return cycle_us[static_cast<size_t>(share * double(cycle_us.size() - 1))]; };
+    r.cycle_p50_us = at(0.5);
+    r.cycle_p99_us = at(0.99);
+    r.cycle_max_us = cycle_us.back();
+  }
   r.check = checker.finish();
   return r;
 }
@@ -108,6 +121,8 @@ void print(const char* name, const Result& r, double path_dev) {
   std::printf("  largest distance from the programmed polyline %.6f mm (PATH_DEV %.4f mm)\n", r.max_deviation,
               path_dev);
   std::printf("  channel cost %.1f us per block (decode, plan, interpolate, check)\n", r.plan_us_per_block);
+  std::printf("  channel step per cycle: median %.1f us, 99th percentile %.1f us, largest %.1f us\n", r.cycle_p50_us,
+              r.cycle_p99_us, r.cycle_max_us);
   std::printf("  limit check: %zu violations\n", r.check.violations.size());
   for (const auto& a : r.check.axes)
     std::printf("    %s: v %.1f/%.0f (%.0f%%)  a %.0f/%.0f (%.0f%%)  j %.0f/%.0f (%.0f%%)\n", a.axis.c_str(), a.cmd_v,
