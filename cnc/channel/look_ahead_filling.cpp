@@ -104,7 +104,7 @@ size_t PathInterpolator::push_along_curve(const StopPoint& stop, bool towards_en
   const size_t n = j.parts.size();
   for (size_t step = 0; step < n; ++step) {
     const size_t i = towards_end ? step : n - 1 - step;
-    const double from = j.begin(i), to = i + 1 == n ? length : j.parts[i].end;
+    const double from = j.begin(i), to = j.parts[i].end;
     if (towards_end && to > x) push_curve_span(j.parts[i].block, {stop.curve, std::max(x, from), to, false});
     if (!towards_end && from < x) push_curve_span(j.parts[i].block, {stop.curve, from, std::min(x, to), true});
   }

@@ -198,14 +198,12 @@ double ContourCurve::distance_to(const std::vector<double>& point) const {
 }
 
 double ContourJoint::covered(double s_from, double s_to) const {
-  const double length = curve->length();
   const auto share = [&](double lo, double hi, double covered_half) {
     const double overlap = std::min(s_to, hi) - std::max(s_from, lo);
     return hi > lo && overlap > 0 ? covered_half * overlap / (hi - lo) : 0.0;
   };
   double sum = 0;
-  for (size_t i = 0; i < parts.size(); ++i)
-    sum += share(begin(i), i + 1 == parts.size() ? length : parts[i].end, parts[i].covered);
+  for (size_t i = 0; i < parts.size(); ++i) sum += share(begin(i), parts[i].end, parts[i].covered);
   return sum;
 }
 

@@ -72,7 +72,7 @@ struct ContourJoint {
     // The lift function's caps of its block (Motion::path_caps): a curve
     // into or out of a lift range keeps the range's caps on its half.
     Limits caps = Limits::none();
-    double end = 0;  // where on the curve it ends (the last: the curve's length)
+    double end = 0;  // where on the curve it ends (the last: exactly the curve's length)
   };
   std::vector<Part> parts;  // in the curve's direction
   double begin(size_t part) const { return part == 0 ? 0.0 : parts[part - 1].end; }

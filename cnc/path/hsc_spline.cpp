@@ -217,8 +217,7 @@ bool HscSpline::within_tolerance(const ContourCurve& curve, size_t from, size_t 
 }
 
 void HscSpline::emit_span(size_t from, size_t to, const Knot& a, const Knot& b, std::vector<PathPiece>& out) {
-  auto curve = std::make_shared<const ContourCurve>(ContourCurve::End{a.point, a.tangent, a.curvature},
-                                                    ContourCurve::End{b.point, b.tangent, b.curvature});
+  auto curve = std::make_shared<const ContourCurve>(a, b);
   if (!within_tolerance(*curve, from, to)) {
     if (to - from > 1 && !mode_.auto_off_path && !mode_.auto_off_track) {
       const size_t middle = (from + to) / 2;

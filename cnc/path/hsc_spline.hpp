@@ -71,9 +71,9 @@ class HscSpline {
     PathSegment segment;
     bool stop_before = false;
   };
-  struct Knot {
-    std::vector<double> point, tangent, curvature;
-  };
+  // A knot: a programmed point with the tangent and curvature the spans
+  // on either side share there.
+  using Knot = ContourCurve::End;
 
   bool continues_with(const PathSegment& segment, const HscMode& mode) const;
   // Point k of the run, with tangent and curvature of the fit around it.
