@@ -56,8 +56,8 @@ bool HscSpline::continues_with(const PathSegment& segment, const HscMode& mode) 
   return bend(members_.back().segment, segment) <= corner;
 }
 
-std::vector<PathPiece> HscSpline::add(const MotionPiece& piece, PathSegment segment, bool stop_before) {
-  std::vector<PathPiece> out;
+std::vector<HscOutput> HscSpline::add(const MotionPiece& piece, PathSegment segment, bool stop_before) {
+  std::vector<HscOutput> out;
   stop_before = stop_before || take_exact_stop();
   if (has_open() && (stop_before || !continues_with(segment, piece.out->hsc))) close(out);
   if (!has_open()) {
@@ -67,7 +67,7 @@ std::vector<PathPiece> HscSpline::add(const MotionPiece& piece, PathSegment segm
   }
   points_.push_back(segment.end());
   chord_.push_back(chord_.back() + segment.length());
-  members_.push_back({piece.block, piece.slope, std::move(segment), stop_before});
+  members_.push_back({piece, std::move(segment), stop_before});
   if (piece.out->transition == BlockTransition::exact_stop) {
     close(out);
     exact_stop_next_ = true;
@@ -78,8 +78,8 @@ std::vector<PathPiece> HscSpline::add(const MotionPiece& piece, PathSegment segm
   return out;
 }
 
-std::vector<PathPiece> HscSpline::flush() {
-  std::vector<PathPiece> out;
+std::vector<HscOutput> HscSpline::flush() {
+  std::vector<HscOutput> out;
   if (has_open()) close(out);
   return out;
 }
@@ -91,8 +91,10 @@ void HscSpline::clear() {
 
 bool HscSpline::take_exact_stop() { return std::exchange(exact_stop_next_, false); }
 
-void HscSpline::close(std::vector<PathPiece>& out) {
-  emit(true, out);
+void HscSpline::close(std::vector<HscOutput>& out) {
+  // A run of one block is no spline: its line, with its own limits.
+  if (members_.size() == 1 && done_ == 0) separate(0, 1, out);
+  else emit(true, out);
   forget_run();
 }
 
@@ -163,7 +165,7 @@ std::optional<size_t> HscSpline::span_end(size_t from, bool closing) const {
   return to;
 }
 
-void HscSpline::emit(bool closing, std::vector<PathPiece>& out) {
+void HscSpline::emit(bool closing, std::vector<HscOutput>& out) {
   while (done_ + 1 < points_.size()) {
     const std::optional<size_t> to = span_end(done_, closing);
     if (!to) return;
@@ -216,7 +218,7 @@ bool HscSpline::within_tolerance(const ContourCurve& curve, size_t from, size_t 
   return true;
 }
 
-void HscSpline::emit_span(size_t from, size_t to, const Knot& a, const Knot& b, std::vector<PathPiece>& out) {
+void HscSpline::emit_span(size_t from, size_t to, const Knot& a, const Knot& b, std::vector<HscOutput>& out) {
   auto curve = std::make_shared<const ContourCurve>(a, b);
   if (!within_tolerance(*curve, from, to)) {
     if (to - from > 1 && !mode_.auto_off_path && !mode_.auto_off_track) {
@@ -225,7 +227,7 @@ void HscSpline::emit_span(size_t from, size_t to, const Knot& a, const Knot& b, 
       emit_span(from, middle, a, m, out);
       emit_span(middle, to, m, b, out);
     } else {
-      emit_lines(from, to, out);
+      separate(from, to, out);
     }
     return;
   }
@@ -235,21 +237,21 @@ void HscSpline::emit_span(size_t from, size_t to, const Knot& a, const Knot& b, 
   for (size_t i = from; i < to; ++i) {
     const PathSegment& s = members_[i].segment;
     const double end = i + 1 == to ? length : length * (chord_[i + 1] - chord_[from]) / polyline;
-    joint->parts.push_back({members_[i].block, s.covered_distance(), s.programmed_velocity(),
+    joint->parts.push_back({members_[i].piece.block, s.covered_distance(), s.programmed_velocity(),
                             Limits::none(), end});
   }
   std::shared_ptr<const ContourJoint> shared = std::move(joint);
   for (size_t i = from; i < to; ++i) {
     const size_t part = i - from;
-    out.push_back({members_[i].block,
-                   PathSegment(shared, shared->begin(part), shared->parts[part].end, false, machine_),
-                   members_[i].slope, members_[i].stop_before, true, true});
+    out.emplace_back(PathPiece{members_[i].piece.block,
+                               PathSegment(shared, shared->begin(part), shared->parts[part].end, false, machine_),
+                               members_[i].piece.slope, members_[i].stop_before, true, true});
   }
 }
 
-void HscSpline::emit_lines(size_t from, size_t to, std::vector<PathPiece>& out) {
+void HscSpline::separate(size_t from, size_t to, std::vector<HscOutput>& out) {
   for (size_t i = from; i < to; ++i)
-    out.push_back({members_[i].block, members_[i].segment, members_[i].slope, members_[i].stop_before, true, true});
+    out.emplace_back(SeparatedBlock{members_[i].piece, members_[i].segment, members_[i].stop_before});
 }
 
 void HscSpline::drop_behind() {

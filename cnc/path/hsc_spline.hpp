@@ -21,8 +21,10 @@
 // blocks up to merge_span_mm and hsc_span_turn_deg of turning, its blocks'
 // ends lying inside it at the share of the polyline's length they end at.
 // A span that leaves PATH_DEV (main axes, from the programmed polyline) or
-// TRACK_DEV (the other axes) is halved; a single block that still does runs
-// as its programmed line (AUTO_OFF_PATH/TRACK=1: the whole span does).
+// TRACK_DEV (the other axes) is halved; a single block that still does is
+// separated (AUTO_OFF_PATH/TRACK=1: the whole span is), as is a run of one
+// block: it goes to the contour builder and runs with the transitions
+// programmed for it (G261 contours them).
 //
 // The spline ends (its end knot has the tangent of a one-sided fit) where
 // a block is not smoothed (G00, an arc, a split or rest of a block, a lift
@@ -32,6 +34,7 @@
 // sees no further block (flush).
 #include <cstddef>
 #include <optional>
+#include <variant>
 #include <vector>
 
 #include "contour_builder.hpp"
@@ -40,6 +43,17 @@
 #include "path_segment.hpp"
 
 namespace hil::cnc {
+
+// A block the spline leaves as programmed ("block is separated"): a run of
+// one block, or one whose span leaves PATH_DEV or TRACK_DEV on its own. It
+// runs with the transitions programmed for it (G261 contours its corners).
+struct SeparatedBlock {
+  MotionPiece piece;
+  PathSegment segment;
+  bool stop_before = false;
+};
+// What the spline hands on, in program order.
+using HscOutput = std::variant<PathPiece, SeparatedBlock>;
 
 class HscSpline {
  public:
@@ -53,11 +67,11 @@ class HscSpline {
   // Whether `piece` joins a spline: a whole G01 block under #HSC ON.
   static bool smooths(const MotionPiece& piece, const PathSegment& segment);
 
-  // The next smoothed block; returns the pieces that are final now (spans
-  // whose end knot's fit has all its points).
-  std::vector<PathPiece> add(const MotionPiece& piece, PathSegment segment, bool stop_before);
+  // The next smoothed block; returns what is final now (spans whose end
+  // knot's fit has all its points, and the blocks separated before them).
+  std::vector<HscOutput> add(const MotionPiece& piece, PathSegment segment, bool stop_before);
   // Nothing follows (yet): the spline ends at its last programmed point.
-  std::vector<PathPiece> flush();
+  std::vector<HscOutput> flush();
   void clear();
   bool has_open() const { return !members_.empty(); }
   // The last spline ended with an exact stop: the path stands before
@@ -66,8 +80,7 @@ class HscSpline {
 
  private:
   struct Member {
-    size_t block = 0;
-    SlopeType slope = SlopeType::trapez;
+    MotionPiece piece;
     PathSegment segment;
     bool stop_before = false;
   };
@@ -81,11 +94,11 @@ class HscSpline {
   // Where the span from point `from` ends, once the points it and its end
   // knot's fit need are there.
   std::optional<size_t> span_end(size_t from, bool closing) const;
-  void emit(bool closing, std::vector<PathPiece>& out);
-  void emit_span(size_t from, size_t to, const Knot& a, const Knot& b, std::vector<PathPiece>& out);
-  void emit_lines(size_t from, size_t to, std::vector<PathPiece>& out);
+  void emit(bool closing, std::vector<HscOutput>& out);
+  void emit_span(size_t from, size_t to, const Knot& a, const Knot& b, std::vector<HscOutput>& out);
+  void separate(size_t from, size_t to, std::vector<HscOutput>& out);
   bool within_tolerance(const ContourCurve& curve, size_t from, size_t to) const;
-  void close(std::vector<PathPiece>& out);
+  void close(std::vector<HscOutput>& out);
   void forget_run();
   void drop_behind();
 

@@ -25,22 +25,39 @@ LookAhead::LookAhead(const MachineConfig& machine, size_t capacity)
 
 void LookAhead::push(const MotionPiece& piece, bool stop_before) {
   PathSegment segment = piece.segment(machine_);
-  // KRN-9: a spline and the contour builder never hold a block at once.
   if (HscSpline::smooths(piece, segment)) {
-    for (PathPiece& part : builder_.flush()) push_piece(std::move(part));
-    stop_before = stop_before || builder_.take_exact_stop();
-    for (PathPiece& part : hsc_.add(piece, std::move(segment), stop_before)) push_spline_piece(std::move(part));
+    take(hsc_.add(piece, std::move(segment), stop_before));
     return;
   }
-  ++programmed_;
   flush_spline();
   stop_before = stop_before || hsc_.take_exact_stop();
+  add_to_builder(piece, std::move(segment), stop_before);
+}
+
+void LookAhead::add_to_builder(const MotionPiece& piece, PathSegment&& segment, bool stop_before) {
+  ++programmed_;
   if (!piece.out) {
     flush();
     push_piece({piece.block, std::move(segment), piece.slope, stop_before, true, true});
     return;
   }
   for (PathPiece& part : builder_.add(piece, std::move(segment), stop_before)) push_piece(std::move(part));
+}
+
+// KRN-9: the builder may hold the block before a spline until the spline
+// hands on its first part (the block after it may be separated: then the
+// builder contours into it, G261).
+void LookAhead::take(std::vector<HscOutput>&& items) {
+  for (HscOutput& item : items) {
+    if (auto* separated = std::get_if<SeparatedBlock>(&item)) {
+      add_to_builder(separated->piece, std::move(separated->segment), separated->stop_before);
+      continue;
+    }
+    PathPiece& part = std::get<PathPiece>(item);
+    for (PathPiece& piece : builder_.flush()) push_piece(std::move(piece));
+    part.stop_before = part.stop_before || builder_.take_exact_stop();
+    push_spline_piece(std::move(part));
+  }
 }
 
 double LookAhead::path_length() const {
@@ -58,9 +75,7 @@ void LookAhead::push_spline_piece(PathPiece&& piece) {
   push_piece(std::move(piece));
 }
 
-void LookAhead::flush_spline() {
-  for (PathPiece& piece : hsc_.flush()) push_spline_piece(std::move(piece));
-}
+void LookAhead::flush_spline() { take(hsc_.flush()); }
 
 void LookAhead::flush() {
   flush_spline();

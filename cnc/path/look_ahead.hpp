@@ -102,6 +102,8 @@ class LookAhead {
 
   void push_piece(PathPiece&& piece);
   void push_spline_piece(PathPiece&& piece);  // counted as a programmed block
+  void add_to_builder(const MotionPiece& piece, PathSegment&& segment, bool stop_before);
+  void take(std::vector<HscOutput>&& items);  // what the spline hands on
   void flush_spline();
 
   const MachineConfig& machine_;

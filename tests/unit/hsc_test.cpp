@@ -104,19 +104,29 @@ CircleRun run_chord_circle(int chords, int decimals, const std::string& head) {
   return r;
 }
 
-// The pieces an HscSpline makes of a decoded program's G01 blocks.
+// The pieces an HscSpline makes of a decoded program's G01 blocks (a
+// separated block as its line).
 std::vector<PathPiece> spline_pieces(const DecodedProgram& p, const MachineConfig& m) {
   HscSpline spline(m);
   std::vector<PathPiece> pieces;
+  const auto take = [&](std::vector<HscOutput>&& items) {
+    for (HscOutput& item : items) {
+      if (auto* part = std::get_if<PathPiece>(&item)) pieces.push_back(std::move(*part));
+      else {
+        SeparatedBlock& s = std::get<SeparatedBlock>(item);
+        pieces.push_back({s.piece.block, std::move(s.segment), s.piece.slope, s.stop_before, true, true});
+      }
+    }
+  };
   for (size_t k = 0; k < p.blocks.size(); ++k) {
     const Block& b = p.blocks[k];
     if (!b.has_motion || b.motion.type != MotionType::linear) continue;
     const PathSegment segment(b.motion, m);
     const MotionPiece piece = MotionPiece::of_block(b, k, segment);
     REQUIRE(HscSpline::smooths(piece, segment));
-    for (PathPiece& out : spline.add(piece, segment, false)) pieces.push_back(std::move(out));
+    take(spline.add(piece, segment, false));
   }
-  for (PathPiece& out : spline.flush()) pieces.push_back(std::move(out));
+  take(spline.flush());
   return pieces;
 }
 
@@ -373,4 +383,68 @@ TEST_CASE("KRN-9 KRN-6 an exact stop at the end of a block before a spline and a
   // below 2.6 mm/s; passed without a stop, both joints run at tens of mm/s.
   CHECK(at_line_end < 3);
   CHECK(at_g60 < 3);
+}
+
+namespace {
+
+// Cycles from program start to its end, and the lowest path velocity
+// between the first and the last cycle of motion (0: the path stood).
+struct SmoothedRun {
+  int64_t cycles = 0;
+  double lowest_velocity = 0;
+  size_t violations = 0;
+};
+
+SmoothedRun run_between_motion(const std::string& program) {
+  const MachineConfig m = test::xyz_machine();
+  Channel channel(m, program);
+  logger::LimitChecker checker(m);
+  std::vector<double> velocity;
+  SmoothedRun r;
+  r.cycles = test::run_program(channel, &checker, [&](int64_t, const HliState&, HliControl&) {
+    const auto& sp = channel.setpoints();
+    velocity.push_back(std::hypot(sp[0].velocity, sp[1].velocity));
+  });
+  const auto first = std::find_if(velocity.begin(), velocity.end(), [](double v) { return v > 0; });
+  const auto last = std::find_if(velocity.rbegin(), velocity.rend(), [](double v) { return v > 0; }).base();
+  r.lowest_velocity = first < last ? *std::min_element(first, last) : 0.0;
+  r.violations = checker.finish().violations.size();
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("KRN-9 KRN-6 a block HSC separates runs with its programmed transitions: G261 contours it", "[hsc]") {
+  // Separated: a run of one block, or a block whose span leaves PATH_DEV.
+  const std::string g261 = "#CONTOUR MODE [DEV PATH_DEV=0.02]\nG261\n";
+  SECTION("lines between tangent arcs (a plasma profile): each line a run of one block") {
+    const std::string profile =
+        "G01 Y32 F2800\nG02 X8 Y40.8 I8.8 J0\nG01 X30\nG02 X38.8 Y32 I0 J-8.8\nG01 Y8\n"
+        "G02 X30 Y-0.8 I-8.8 J0\nG01 X8\nM30\n";
+    const SmoothedRun contoured = run_between_motion("N1 G90 G00 X-0.8 Y0 Z0\n" + g261 + profile);
+    const SmoothedRun with_hsc =
+        run_between_motion("N1 G90 G00 X-0.8 Y0 Z0\n" + g261 + "#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n" + profile);
+    // Before: each line a spline of one straight span, its joints with the
+    // arcs not contoured and its limits a curve's (a/2, j/3).
+    CHECK(with_hsc.cycles == contoured.cycles);
+    CHECK(with_hsc.violations == 0);
+  }
+  SECTION("chords of 1.4 mm turning 4 degrees (sagitta 0.012 mm) under PATH_DEV 0.005: every span is separated") {
+    // An arc of R 20 as 30 chords in 3 decimals: the spline through the
+    // points bulges 0.012 mm from each chord, beyond PATH_DEV.
+    std::string chords;
+    for (int i = 1; i <= 30; ++i) {
+      const double a = i * 4 * M_PI / 180;
+      chords += "X" + rounded(20 * std::sin(a), 3) + " Y" + rounded(20 - 20 * std::cos(a), 3) + "\n";
+    }
+    const std::string head = "N1 G90 G00 X0 Y0 Z0\n" + g261 + "G01 X0.001 F6000\n";
+    const SmoothedRun contoured = run_between_motion(head + chords + "M30\n");
+    const SmoothedRun with_hsc = run_between_motion(head + "#HSC ON [BSPLINE PATH_DEV=0.005]\n" + chords + "M30\n");
+    INFO("G261 " << contoured.cycles << " cycles, lowest " << contoured.lowest_velocity << " mm/s; with #HSC "
+                 << with_hsc.cycles << " cycles, lowest " << with_hsc.lowest_velocity << " mm/s");
+    // Before: each separated chord ran as a line whose corners stopped.
+    CHECK(with_hsc.lowest_velocity > 0.5 * contoured.lowest_velocity);
+    CHECK(with_hsc.cycles <= contoured.cycles * 1.02);
+    CHECK(with_hsc.violations == 0);
+  }
 }
