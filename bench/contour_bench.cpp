@@ -16,6 +16,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "chord_circle_program.hpp"
 #include "command_line.hpp"
 #include "channel.hpp"
 #include "limit_check.hpp"
@@ -52,7 +53,7 @@ struct Result {
 // time between the first and the last polyline point.
 Result run(const MachineConfig& machine, const std::string& program, const std::vector<Point>& polyline,
            double length, double feed, size_t blocks, FILE* csv, int64_t first_line = 0,
-           const std::vector<Point>& joints = {}) {
+           const std::vector<Point>& joints = {}, double joint_z_below = 1e300) {
   Result r;
   r.joint_min_velocity.assign(joints.size(), 1e300);
   Channel channel(machine, program);
@@ -75,7 +76,7 @@ Result run(const MachineConfig& machine, const std::string& program, const std::
     for (const auto& s : sp) v += s.velocity * s.velocity;
     v = std::sqrt(v);
     for (size_t j = 0; j < joints.size(); ++j)
-      if (std::hypot(p.x - joints[j].x, p.y - joints[j].y) < 1.0 && sp[2].position < -1.9)
+      if (std::hypot(p.x - joints[j].x, p.y - joints[j].y) < 1.0 && sp[2].position < joint_z_below)
         r.joint_min_velocity[j] = std::min(r.joint_min_velocity[j], v);
     if (v > 0) {
       if (first_moving < 0) first_moving = k;
@@ -116,6 +117,58 @@ Result run(const MachineConfig& machine, const std::string& program, const std::
   return r;
 }
 
+// Issue 36 item 4: the corner speed the jerk limit allows within PATH_DEV
+// (docs/CONTOURING.md "Corner speed bound"). The velocity vector turns from
+// v t1 to v t2 as V(t) = v t1 + v (t2 - t1) s(t/T), s the jerk-limited S
+// (2u^2, then 1 - 2(1-u)^2): axis i changes its velocity by v |t2_i - t1_i|
+// with peak acceleration 2 v |dt_i| / T and jerk 4 v |dt_i| / T^2, so T >=
+// the largest of 2 sqrt(v |dt_i| / j_i) and 2 v |dt_i| / a_i; the path
+// leaves the programmed corner by a distance that grows with v T. The
+// largest v whose shortest T keeps within PATH_DEV (found numerically) is
+// the bound; the lowest path velocity of that turn is |V| at its middle.
+struct CornerBound {
+  double v = 0, v_lowest = 0;
+};
+
+// Largest distance of the turn (v, T) from the two programmed lines.
+double turn_deviation(Point t1, Point t2, double v, double T) {
+  const int n = 2000;
+  const double dt = T / n;
+  // From the transition's start, which lies on line 1 at v T / 2 before the corner.
+  Point p{-t1.x * v * T / 2, -t1.y * v * T / 2};
+  double worst = 0;
+  for (int k = 0; k < n; ++k) {
+    const double u = (k + 0.5) / n;
+    const double s = u < 0.5 ? 2 * u * u : 1 - 2 * (1 - u) * (1 - u);
+    p.x += v * (t1.x + (t2.x - t1.x) * s) * dt;
+    p.y += v * (t1.y + (t2.y - t1.y) * s) * dt;
+    // to line 1 (up to the corner, the origin) and line 2 (from it)
+    const double a1 = std::min(0.0, p.x * t1.x + p.y * t1.y), a2 = std::max(0.0, p.x * t2.x + p.y * t2.y);
+    const double d1 = std::hypot(p.x - a1 * t1.x, p.y - a1 * t1.y), d2 = std::hypot(p.x - a2 * t2.x, p.y - a2 * t2.y);
+    worst = std::max(worst, std::min(d1, d2));
+  }
+  return worst;
+}
+
+CornerBound corner_bound(Point t1, Point t2, double path_dev, double feed, const MachineConfig& machine) {
+  const double dt[2] = {std::abs(t2.x - t1.x), std::abs(t2.y - t1.y)};
+  const auto shortest_turn = [&](double v) {
+    double T = 0;
+    for (int i = 0; i < 2; ++i) {
+      const AxisConfig& axis = machine.axes[static_cast<size_t>(i)];
+      T = std::max({T, 2 * std::sqrt(v * dt[i] / axis.j_max), 2 * v * dt[i] / axis.a_max});
+    }
+    return T;
+  };
+  double lo = 0, hi = feed;
+  if (turn_deviation(t1, t2, hi, shortest_turn(hi)) <= path_dev) lo = hi;
+  for (int k = 0; k < 60 && lo < hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (turn_deviation(t1, t2, mid, shortest_turn(mid)) <= path_dev ? lo : hi) = mid;
+  }
+  return {lo, lo * 0.5 * std::hypot(t1.x + t2.x, t1.y + t2.y)};
+}
+
 void print(const char* name, const Result& r, double path_dev) {
   std::printf("%s\n  program time %.3f s, ideal %.3f s: %.3fx\n", name, r.time_s, r.ideal_s, r.time_s / r.ideal_s);
   std::printf("  largest distance from the programmed polyline %.6f mm (PATH_DEV %.4f mm)\n", r.max_deviation,
@@ -141,7 +194,7 @@ int main(int argc, char** argv) {
   app.add_option("--chords", chords, "chords of the circle")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--path-dev", path_dev, "permitted path deviation, mm")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--csv", csv_file, "write the commanded path as CSV");
-  app.add_option("--only", only_name, "circle or contour")->check(CLI::IsMember({"circle", "contour"}));
+  app.add_option("--only", only_name, "circle, demo or corners")->check(CLI::IsMember({"circle", "demo", "corners"}));
   app.add_option("--decimals", decimals, "decimals of the chord end points")->check(CLI::Range(0, 15))->capture_default_str();
   app.footer("Documentation: docs/PERFORMANCE.md and docs/CONTOURING.md in the source tree");
   app.add_option("--smoothing", smoothing, "of the chord circle: g261 (polynomial contouring, KRN-6) or hsc "
@@ -158,28 +211,24 @@ int main(int argc, char** argv) {
 
   if (!only || !std::strcmp(only, "circle")) {
     // A circle of radius `radius` as chords of `chord` mm, counter-clockwise from (R, 0).
-    const double step = 2 * std::asin(chord / (2 * radius));
     for (const bool contour : {false, true}) {
       if (!contour && chords > 2000) {
         std::printf("chord circle without G261: every chord an exact stop (%d chords: not run, ~%.0f s)\n", chords,
                     chords * 0.0416);
         continue;
       }
-      std::string program = "%chords\nN1 G90 G00 X" + std::to_string(radius) + " Y0 Z0\n";
-      char line[160];
+      bench::ChordCircle circle;
+      circle.chords = chords;
+      circle.radius = radius;
+      circle.chord = chord;
+      circle.path_dev = path_dev;
+      circle.decimals = decimals;
+      circle.merge = merge;
       const bool hsc = smoothing == "hsc";
-      if (hsc) std::snprintf(line, sizeof line, "#HSC ON [BSPLINE PATH_DEV=%.6g MERGE=%d]\n", path_dev, merge);
-      else std::snprintf(line, sizeof line, "#CONTOUR MODE [DEV PATH_DEV=%.6g]\n", path_dev);
-      if (contour) program += line;
-      std::vector<Point> polyline{{radius, 0}};
-      for (int c = 1; c <= chords; ++c) {
-        const Point p{radius * std::cos(c * step), radius * std::sin(c * step)};
-        polyline.push_back(p);
-        std::snprintf(line, sizeof line, "%sX%.*f Y%.*f%s\n", c == 1 ? (contour && !hsc ? "G01 G261 " : "G01 ") : "", decimals,
-                      p.x, decimals, p.y, c == 1 ? " F6000" : "");
-        program += line;
-      }
-      program += "M30\n";
+      const std::string program =
+          circle.program(!contour ? bench::Smoothing::none : hsc ? bench::Smoothing::hsc : bench::Smoothing::g261);
+      std::vector<Point> polyline;
+      for (int c = 0; c <= chords; ++c) polyline.push_back({circle.x(c), circle.y(c)});
       const Result r =
           run(machine, program, polyline, chords * chord, 100.0, chords, contour ? csv : nullptr, contour ? 4 : 3);
       char name[120];
@@ -211,12 +260,39 @@ int main(int argc, char** argv) {
       polyline.push_back({10, 90});
       polyline.push_back({10, 10});
       const Result r = run(machine, program, {}, 70 + 40 + 70 + 80 + 20 * M_PI, 50.0, 11, nullptr, 0,
-                           {{80, 10}, {100, 30}, {100, 70}, {80, 90}});
+                           {{80, 10}, {100, 30}, {100, 70}, {80, 90}}, -1.9);
       print(contour ? "demo, G261 from N30" : "demo, no contouring", r, path_dev);
       std::printf("  lowest path velocity within 1 mm of the tangent joints (feed 50 mm/s):");
       for (double v : r.joint_min_velocity) std::printf(" %.2f", v);
       std::printf(" mm/s\n");
       (void)polyline;
+    }
+  }
+  if (!only || !std::strcmp(only, "corners")) {
+    // One corner between lines of 20 mm at F6000: G261 against the bound.
+    std::printf("corners of two 20 mm G01 lines, F6000, PATH_DEV %.4f mm: lowest path velocity within 1 mm of the "
+                "corner (mm/s), against the jerk-limited turn within PATH_DEV (issue 36 item 4)\n",
+                path_dev);
+    std::printf("%7s %9s %9s %7s %10s %10s %8s %8s\n", "angle", "bound", "G261", "share", "time G261", "exact stop",
+                "dev", "viol");
+    for (const double degrees : {2.0, 5.0, 10.0, 20.0, 30.0, 45.0, 60.0, 90.0, 120.0, 150.0}) {
+      const double angle = degrees * M_PI / 180;
+      const Point t1{1, 0}, t2{std::cos(angle), std::sin(angle)};
+      const CornerBound bound = corner_bound(t1, t2, path_dev, 100.0, machine);
+      char end[120];
+      std::snprintf(end, sizeof end, "X%.6f Y%.6f\nM30\n", 20 + 20 * t2.x, 20 * t2.y);
+      const std::vector<Point> polyline{{0, 0}, {20, 0}, {20 + 20 * t2.x, 20 * t2.y}};
+      Result timed[2];
+      for (const bool contour : {false, true}) {
+        std::string program = "%corner\nN1 G90 G00 X0 Y0 Z0\n";
+        if (contour) program += "#CONTOUR MODE [DEV PATH_DEV=" + std::to_string(path_dev) + "]\nG261\n";
+        program += "G01 X20 F6000\n" + std::string(end);
+        timed[contour] = run(machine, program, polyline, 40, 100.0, 2, nullptr, 0, {{20, 0}});
+      }
+      const Result& r = timed[1];
+      std::printf("%6.0f° %9.2f %9.2f %6.0f%% %9.3fs %9.3fs %8.5f %8zu\n", degrees, bound.v_lowest,
+                  r.joint_min_velocity[0], 100 * r.joint_min_velocity[0] / bound.v_lowest, r.time_s, timed[0].time_s,
+                  r.max_deviation, r.check.violations.size());
     }
   }
   if (csv) std::fclose(csv);
