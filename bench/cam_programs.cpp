@@ -46,7 +46,7 @@ struct Figures {
   bool finished = false;
 };
 
-// The programmed path: the motion blocks of the program as written.
+// The programmed path: the motion blocks of a program as decoded.
 struct ProgrammedPath {
   std::vector<PathSegment> segments;
   std::vector<int64_t> line;          // of each segment
