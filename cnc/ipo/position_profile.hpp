@@ -15,10 +15,12 @@
 // rest to rest (TRAPEZ, STEP) the profile is symmetric and the distance
 // gives it directly (a cube root without acceleration plateau, a quadratic
 // with one). Elsewhere (TRAPEZ, STEP) the drive phase holding it is found
-// from the values at the phase ends, and a regula falsi with Anderson-Bjoerck
-// weights and bisection safeguard finds it within that phase, where the
-// function is smooth. SIN2 keeps the search over the whole drive. No path
-// allocates: the profile holds its phases in place.
+// from the values at the phase ends, and within that phase, where the
+// function is smooth, TRAPEZ takes bracketed Newton steps on its
+// closed-form velocity change (issue 36: trapez_change.hpp) and STEP a
+// regula falsi with Anderson-Bjoerck weights and bisection safeguard.
+// SIN2 keeps the search over the whole drive. No path allocates: the
+// profile holds its phases in place.
 #include "motion_profile.hpp"
 #include "slope.hpp"
 

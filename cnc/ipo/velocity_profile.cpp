@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "trapez_change.hpp"
+
 namespace hil::cnc {
 namespace {
 
@@ -99,11 +101,32 @@ void plan_change(double v, double a, double v_target, const Limits& lim, SlopeTy
 
 VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope) {
   VelocityChange change;
+  if (slope == SlopeType::trapez && std::isfinite(lim.j)) {  // the same phases, without the slope types' cases
+    const TrapezChange<double> trapez = plan_trapez_change(v, a, v_target, lim);
+    if (trapez.just_unwind) {
+      change.phases.push_back(linear_ramp(a, 0.0, lim.j));
+      return change;
+    }
+    const double a_p = trapez.sign * trapez.a_p;
+    change.phases.push_back(linear_ramp(a, a_p, lim.j));
+    change.phases.push_back(hold(trapez.t_hold, a_p));
+    change.phases.push_back(linear_ramp(a_p, 0.0, lim.j));
+    return change;
+  }
+  return velocity_change_reference(v, a, v_target, lim, slope);
+}
+
+VelocityChange velocity_change_reference(double v, double a, double v_target, const Limits& lim, SlopeType slope) {
+  VelocityChange change;
   plan_change(v, a, v_target, lim, slope, [&](const Phase& ph) { change.phases.push_back(ph); });
   return change;
 }
 
 MotionState velocity_change_end(const MotionState& s, double v_target, const Limits& lim, SlopeType slope) {
+  if (slope == SlopeType::trapez && std::isfinite(lim.j)) {
+    const StateOf<double> end = trapez_change_end(to_state_of(s), v_target, lim);
+    return {end.p, end.v, end.a, end.j};
+  }
   MotionState x = s;
   plan_change(s.v, s.a, v_target, lim, slope, [&](const Phase& ph) { x = advance(x, ph, ph.duration); });
   return x;

@@ -28,8 +28,13 @@ struct VelocityChange {
 // not applied here: the caller chooses v_target.
 VelocityChange velocity_change(double v, double a, double v_target, const Limits& lim, SlopeType slope);
 
+// The same, every slope type by the one construction: what TRAPEZ's closed
+// form (trapez_change.hpp, issue 36) is tested against, to the bit.
+VelocityChange velocity_change_reference(double v, double a, double v_target, const Limits& lim, SlopeType slope);
+
 // velocity_change(v, a, ...).end(s) for s = (p, v, a), without storing
-// the phases (the position planner's searches evaluate it many times).
+// the phases (the position planner's searches evaluate it many times);
+// TRAPEZ in closed form (trapez_change.hpp), to the same bit.
 MotionState velocity_change_end(const MotionState& s, double v_target, const Limits& lim, SlopeType slope);
 
 // The velocity-target mode: v_target is clamped to [-lim.v, lim.v].
