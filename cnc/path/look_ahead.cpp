@@ -1,6 +1,7 @@
 #include "look_ahead.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "bisect.hpp"
@@ -10,6 +11,41 @@
 
 namespace hil::cnc {
 
+namespace {
+
+// TRAPEZ: the v0 whose braking to v_exit (a = 0 at both ends) after
+// reaction_s at v0 covers `distance`, in closed form to round-off. The
+// change is point-symmetric in time, so it covers its mean velocity times
+// its duration: (v0 + v_exit) / 2 * T, T = dv / a + a / j where the
+// plateau is reached (dv >= a^2 / j: a quadratic in v0), else 2 s with
+// s = sqrt(dv / j) (a cubic in s, increasing: Newton from above).
+double trapez_entry_estimate(double v_exit, double distance, const Limits& lim, double reaction_s) {
+  const double a = lim.a, j = lim.j, r = reaction_s;
+  const double dv_plateau = a * a / j;
+  auto covers = [&](double v0) {
+    const double dv = v0 - v_exit;
+    const double t = dv >= dv_plateau ? dv / a + a / j : 2 * std::sqrt(dv / j);
+    return r * v0 + (v0 + v_exit) / 2 * t;
+  };
+  if (covers(v_exit + dv_plateau) <= distance) {
+    // v0^2 / (2a) + v0 (a / 2j + r) - (v_exit^2 / 2a - v_exit a / 2j + distance) = 0
+    const double b = a / (2 * j) + r, c = v_exit * v_exit / (2 * a) - v_exit * a / (2 * j) + distance;
+    return 2 * c / (b + std::sqrt(b * b + 2 * c / a));
+  }
+  // j s^3 + r j s^2 + 2 v_exit s + r v_exit - distance = 0, 0 <= s < a / j
+  auto g = [&](double s) { return ((j * s + r * j) * s + 2 * v_exit) * s + r * v_exit - distance; };
+  double s = a / j;
+  for (int i = 0; i < 40; ++i) {
+    const double slope = (3 * j * s + 2 * r * j) * s + 2 * v_exit;
+    const double next = s - g(s) / slope;
+    if (!(next < s) || !(next >= 0)) break;
+    s = next;
+  }
+  return v_exit + j * s * s;
+}
+
+}  // namespace
+
 double highest_entry_velocity(double v_exit, double distance, double v_cap, const Limits& lim, SlopeType slope,
                               double reaction_s) {
   if (v_cap <= v_exit) return v_cap;
@@ -17,7 +53,30 @@ double highest_entry_velocity(double v_exit, double distance, double v_cap, cons
   const double at_cap = covers(v_cap);
   if (at_cap <= distance) return v_cap;
   // v_exit fits, v_cap does not; the distance grows with v0, smoothly.
-  return last_below(v_exit, v_cap, distance, v_exit * reaction_s, at_cap, covers);
+  double good = v_exit, bad = v_cap, at_good = v_exit * reaction_s, at_bad = at_cap;
+  if (slope == SlopeType::trapez && std::isfinite(lim.j) && lim.a > 0 && lim.j > 0) {
+    // From the closed form's estimate the last double that fits is a few
+    // away: step to it, and bracket it for the search where it is not.
+    const double estimate = trapez_entry_estimate(v_exit, distance, lim, reaction_s);
+    if (estimate > good && estimate < bad) {
+      const double at = covers(estimate);
+      const bool fits = at <= distance;
+      (fits ? good : bad) = estimate;
+      (fits ? at_good : at_bad) = at;
+      for (int step = 0; step < 4; ++step) {
+        const double next = fits ? std::nextafter(good, bad) : std::nextafter(bad, good);
+        if (next == good || next == bad) return good;
+        const double at_next = covers(next);
+        if ((at_next <= distance) != fits) {
+          (fits ? bad : good) = next;
+          return good;
+        }
+        (fits ? good : bad) = next;
+        (fits ? at_good : at_bad) = at_next;
+      }
+    }
+  }
+  return last_below(good, bad, distance, at_good, at_bad, covers);
 }
 
 LookAhead::LookAhead(const MachineConfig& machine, size_t capacity)

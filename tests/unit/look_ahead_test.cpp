@@ -13,6 +13,7 @@
 #include "decoder.hpp"
 #include "look_ahead.hpp"
 #include "position_profile.hpp"
+#include "velocity_profile.hpp"
 #include "profile_check.hpp"
 #include "velocity_profile.hpp"
 #include "test_machine.hpp"
@@ -394,4 +395,40 @@ TEST_CASE("KRN-3 look-ahead: override raised while the path accelerates towards 
     for (const auto& v : checker.finish().violations)
       FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value << " > " << v.limit << " at " << v.time_s);
   }
+}
+
+// Issue 36 item 3: the TRAPEZ stretch's entry velocity starts from a closed
+// form (the change covers its mean velocity times its duration) and steps
+// to the boundary; it must still be the last double from which the change
+// (after reaction_s at v0) covers no more than the distance.
+TEST_CASE("KRN-3 highest_entry_velocity is the last double that fits, from the closed form's estimate", "[look_ahead]") {
+  std::mt19937_64 rng(36007);
+  std::uniform_real_distribution<double> w(0, 1);
+  long searched = 0, not_last = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const Limits lim{std::pow(10.0, -2 + 3 * w(rng)), std::pow(10.0, -1 + 3 * w(rng)), std::pow(10.0, 4 * w(rng))};
+    const double v_exit = i % 5 == 0 ? 0.0 : lim.v * w(rng) * w(rng);
+    const double v_cap = v_exit + lim.v * w(rng);
+    const double distance = std::pow(10.0, -7 + 6 * w(rng));
+    const double reaction_s = i % 3 == 0 ? 0.0 : 0.001;
+    auto covers = [&](double v0) {
+      return v0 * reaction_s + velocity_change_end({0, v0, 0, 0}, v_exit, lim, SlopeType::trapez).p;
+    };
+    if (covers(v_exit) > distance) continue;  // not even v_exit fits (the reaction alone is longer)
+    const double v = highest_entry_velocity(v_exit, distance, v_cap, lim, SlopeType::trapez, reaction_s);
+    REQUIRE(v >= v_exit);
+    REQUIRE(v <= v_cap);
+    if (v == v_cap) {
+      REQUIRE(covers(v_cap) <= distance);
+      continue;
+    }
+    ++searched;
+    REQUIRE(covers(v) <= distance);
+    // The next double up does not fit (where the distance is not monotone
+    // in the last bits, one a few ulp further may).
+    if (covers(std::nextafter(v, v_cap)) <= distance) ++not_last;
+  }
+  INFO(searched << " searched, " << not_last << " with the next double fitting too");
+  CHECK(searched > 100000);
+  CHECK(not_last == 0);
 }
