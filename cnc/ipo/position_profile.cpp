@@ -225,37 +225,36 @@ class Planner {
   // bracket of adjacent doubles, or at an overshoot 1/64 of what
   // is_round_off accepts (the noise of evaluating it).
   Switch find_switch(double f0, const Dual& driven_overshoot) const {
-    const double f1 = driven_overshoot.x;
-    const bool rising = f1 > 0;
-    auto beyond = [&](double f) { return (f > 0) == rising; };
     const double f_tol = std::numeric_limits<double>::epsilon() *
                          (std::abs(start_.p) + std::abs(target_) + (lim_.v + std::abs(start_.v)) * drive_.duration() +
                           std::abs(start_.a) * drive_.duration() * drive_.duration());
+    const double f1 = driven_overshoot.x;
+    Bracket b{0, 0, f0, f1, f_tol, f1 > 0};  // its hi: the phase's duration, once the phase is known
+    double slope_hi = driven_overshoot.d;    // at the phase's end, where known
     // The phase: the first whose end is beyond the target.
     int phase = drive_.count() - 1;
     MotionState s = start_;
-    double f_lo = f0, f_hi = f1;
-    double slope_hi = driven_overshoot.d;  // at the phase's end, where known
     for (int i = 0; i + 1 < drive_.count(); ++i) {
       const Phase& ph = drive_.phase(i);
       const MotionState e = advance(s, ph, ph.duration);
       if (ph.duration > 0) {
-        const Dual f = closed_form_change() ? overshoot_along(s, ph, ph.duration) : Dual{overshoot(e), 0};
+        const Dual f = closed_form_change() ? overshoot_along(s, ph, ph.duration)
+                                            : Dual{overshoot(e), std::numeric_limits<double>::quiet_NaN()};
         if (f.x == 0 || std::abs(f.x) <= f_tol) return {i, ph.duration};
-        if (beyond(f.x)) {
+        if (b.beyond(f.x)) {
           phase = i;
-          f_hi = f.x;
+          b.f_hi = f.x;
           slope_hi = f.d;
           break;
         }
-        f_lo = f.x;
+        b.f_lo = f.x;
       }
       s = e;
     }
     const Phase& ph = drive_.phase(phase);
-    const Bracket bracket{0, ph.duration, f_lo, f_hi, f_tol, rising};
-    if (!closed_form_change()) return {phase, regula_falsi_within(s, ph, bracket)};
-    return {phase, newton_within(s, ph, bracket, slope_hi)};
+    b.hi = ph.duration;
+    if (!closed_form_change()) return {phase, regula_falsi_within(s, ph, b)};
+    return {phase, newton_within(s, ph, b, slope_hi)};
   }
 
   // The switch lies in [lo, hi] of a drive phase, the overshoot f_lo, f_hi there.
