@@ -110,37 +110,42 @@ std::vector<double> ContourCurve::position(double s) const {
   return p;
 }
 
-ContourCurve::Frame ContourCurve::frame(double u) const {
-  const std::vector<double> r = derivative(u, 1), q = derivative(u, 2), w = derivative(u, 3);
+void ContourCurve::frame(double u, Frame& f) const {
+  const size_t n = coefficients_.size();
+  for (std::vector<double>* v : {&f.t, &f.k, &f.dk, &f.r, &f.q, &f.w, &f.normal}) v->resize(n);
+  std::vector<double>&r = f.r, &q = f.q, &w = f.w, &normal = f.normal;
+  for (size_t i = 0; i < n; ++i) {  // as derivative(u, 1 .. 3)
+    const std::array<double, 6>& c = coefficients_[i];
+    r[i] = (((5 * c[5] * u + 4 * c[4]) * u + 3 * c[3]) * u + 2 * c[2]) * u + c[1];
+    q[i] = ((20 * c[5] * u + 12 * c[4]) * u + 6 * c[3]) * u + 2 * c[2];
+    w[i] = (60 * c[5] * u + 24 * c[4]) * u + 6 * c[3];
+  }
   const double sigma = std::sqrt(dot(r, r));
-  Frame f;
-  const size_t n = r.size();
-  f.t.resize(n);
   for (size_t i = 0; i < n; ++i) f.t[i] = r[i] / sigma;
   const double a = dot(q, f.t);
-  std::vector<double> normal(n);  // q - a t
   for (size_t i = 0; i < n; ++i) normal[i] = q[i] - a * f.t[i];
-  f.k.resize(n);
   for (size_t i = 0; i < n; ++i) f.k[i] = normal[i] / (sigma * sigma);
   // d/du of (q - a t) / sigma², then / sigma for d/ds.
   const double da = dot(w, f.t) + (dot(q, q) - a * a) / sigma;
-  f.dk.resize(n);
   for (size_t i = 0; i < n; ++i) {
     const double dnormal = w[i] - da * f.t[i] - a * normal[i] / sigma;
     f.dk[i] = (dnormal / (sigma * sigma) - 2 * normal[i] * a / (sigma * sigma * sigma)) / sigma;
   }
-  return f;
 }
 
 std::vector<double> ContourCurve::tangent(double s) const {
   if (at_start(s)) return start_.tangent;
   if (at_end(s, length())) return end_.tangent;
-  return frame(u_at(s)).t;
+  Frame f;
+  frame(u_at(s), f);
+  return f.t;
 }
 std::vector<double> ContourCurve::curvature(double s) const {
   if (at_start(s)) return start_.curvature;
   if (at_end(s, length())) return end_.curvature;
-  return frame(u_at(s)).k;
+  Frame f;
+  frame(u_at(s), f);
+  return f.k;
 }
 
 ContourCurve::AxisBounds ContourCurve::bounds(double s_from, double s_to) const {
@@ -148,8 +153,9 @@ ContourCurve::AxisBounds ContourCurve::bounds(double s_from, double s_to) const 
   AxisBounds b{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
   const double u0 = u_at(s_from), u1 = u_at(s_to);
   const int samples = std::max(8, static_cast<int>(bound_samples * (u1 - u0)));
+  Frame f;
   for (int k = 0; k <= samples; ++k) {
-    const Frame f = frame(u0 + (u1 - u0) * k / samples);
+    frame(u0 + (u1 - u0) * k / samples, f);
     b.curvature_norm = std::max(b.curvature_norm, std::sqrt(dot(f.k, f.k)));
     b.curvature_rate_norm = std::max(b.curvature_rate_norm, std::sqrt(dot(f.dk, f.dk)));
     for (size_t i = 0; i < n; ++i) {

@@ -51,8 +51,11 @@ class ContourCurve {
   std::vector<double> derivative(double u, int n) const;
   struct Frame {
     std::vector<double> t, k, dk;  // tangent, curvature, dk/ds
+    std::vector<double> r, q, w, normal;  // d^1..3 P/du^3, q - (q.t) t: kept for the next frame
   };
-  Frame frame(double u) const;
+  // Into `f`, whose vectors keep their memory from frame to frame (bounds()
+  // takes hundreds: allocating them was half the contour's planning time).
+  void frame(double u, Frame& f) const;
 };
 
 // A contouring curve where it replaces a corner (KRN-6), or a span of the

@@ -50,32 +50,39 @@ double highest_entry_velocity(double v_exit, double distance, double v_cap, cons
                               double reaction_s) {
   if (v_cap <= v_exit) return v_cap;
   auto covers = [&](double v0) { return v0 * reaction_s + velocity_change_end({0, v0, 0, 0}, v_exit, lim, slope).p; };
-  const double at_cap = covers(v_cap);
-  if (at_cap <= distance) return v_cap;
+  const bool closed_form = slope == SlopeType::trapez && std::isfinite(lim.j) && lim.a > 0 && lim.j > 0;
+  const double estimate = closed_form ? trapez_entry_estimate(v_exit, distance, lim, reaction_s)
+                                      : std::numeric_limits<double>::quiet_NaN();
+  // The estimate is exact to round-off: a v_cap clearly above it does not
+  // fit, no braking needs to say so (a third of the brakings measured).
+  constexpr double clearly = 1e-9;
+  double at_cap = std::numeric_limits<double>::quiet_NaN();
+  if (!(estimate < v_cap * (1 - clearly))) {
+    at_cap = covers(v_cap);
+    if (at_cap <= distance) return v_cap;
+  }
   // v_exit fits, v_cap does not; the distance grows with v0, smoothly.
   double good = v_exit, bad = v_cap, at_good = v_exit * reaction_s, at_bad = at_cap;
-  if (slope == SlopeType::trapez && std::isfinite(lim.j) && lim.a > 0 && lim.j > 0) {
-    // From the closed form's estimate the last double that fits is a few
-    // away: step to it, and bracket it for the search where it is not.
-    const double estimate = trapez_entry_estimate(v_exit, distance, lim, reaction_s);
-    if (estimate > good && estimate < bad) {
-      const double at = covers(estimate);
-      const bool fits = at <= distance;
-      (fits ? good : bad) = estimate;
-      (fits ? at_good : at_bad) = at;
-      for (int step = 0; step < 4; ++step) {
-        const double next = fits ? std::nextafter(good, bad) : std::nextafter(bad, good);
-        if (next == good || next == bad) return good;
-        const double at_next = covers(next);
-        if ((at_next <= distance) != fits) {
-          (fits ? bad : good) = next;
-          return good;
-        }
-        (fits ? good : bad) = next;
-        (fits ? at_good : at_bad) = at_next;
+  if (estimate > good && estimate < bad) {
+    // From the estimate the last double that fits is a few away: step to
+    // it, and bracket it for the search where it is not.
+    const double at = covers(estimate);
+    const bool fits = at <= distance;
+    (fits ? good : bad) = estimate;
+    (fits ? at_good : at_bad) = at;
+    for (int step = 0; step < 4; ++step) {
+      const double next = fits ? std::nextafter(good, bad) : std::nextafter(bad, good);
+      if (next == good || next == bad) return good;
+      const double at_next = covers(next);
+      if ((at_next <= distance) != fits) {
+        (fits ? bad : good) = next;
+        return good;
       }
+      (fits ? good : bad) = next;
+      (fits ? at_good : at_bad) = at_next;
     }
   }
+  if (std::isnan(at_bad)) at_bad = covers(bad);
   return last_below(good, bad, distance, at_good, at_bad, covers);
 }
 

@@ -353,7 +353,7 @@ TEST_CASE("KRN-3 override changes while braking through a curvature step for a c
 }
 
 TEST_CASE("ISC-3 KRN-3 KRN-6 an insert stop on a stretch's end but for round-off: the plan ends at rest there",
-          "[channel][contour]") {
+          "[channel][contour][fuzz]") {
   // Contour fuzz seed 870: a stop placed at a piece's end came out 1e-16
   // beyond the stretch the plan ran to, so the plan kept v_end = 6.7 mm/s
   // there while interpolate() held the path on the stop: 6,468 mm/s^2 on Y.

@@ -432,3 +432,37 @@ TEST_CASE("KRN-3 highest_entry_velocity is the last double that fits, from the c
   CHECK(searched > 100000);
   CHECK(not_last == 0);
 }
+
+TEST_CASE("KRN-3 highest_entry_velocity: a v_cap within a hair of the answer is kept where it fits", "[look_ahead]") {
+  // Above the closed form's estimate by more than 1e-9 a v_cap is taken as
+  // not fitting without a braking: on either side of that edge the answer
+  // is v_cap where v_cap fits, else the last double that does.
+  std::mt19937_64 rng(36011);
+  std::uniform_real_distribution<double> w(0, 1);
+  long capped = 0, below = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const Limits lim{std::pow(10.0, -2 + 3 * w(rng)), std::pow(10.0, -1 + 3 * w(rng)), std::pow(10.0, 4 * w(rng))};
+    const double v_exit = i % 5 == 0 ? 0.0 : lim.v * w(rng) * w(rng);
+    const double distance = std::pow(10.0, -7 + 6 * w(rng));
+    const double reaction_s = i % 3 == 0 ? 0.0 : 0.001;
+    auto covers = [&](double v0) {
+      return v0 * reaction_s + velocity_change_end({0, v0, 0, 0}, v_exit, lim, SlopeType::trapez).p;
+    };
+    if (covers(v_exit) > distance) continue;
+    const double answer = highest_entry_velocity(v_exit, distance, 1e300, lim, SlopeType::trapez, reaction_s);
+    const double v_cap = answer * (1 + (2 * w(rng) - 1) * std::pow(10.0, -14 + 6 * w(rng)));
+    if (!(v_cap > v_exit)) continue;
+    const double v = highest_entry_velocity(v_exit, distance, v_cap, lim, SlopeType::trapez, reaction_s);
+    if (covers(v_cap) <= distance) {
+      ++capped;
+      REQUIRE(v == v_cap);
+    } else {
+      ++below;
+      REQUIRE(covers(v) <= distance);
+      REQUIRE(covers(std::nextafter(v, v_cap)) > distance);
+    }
+  }
+  INFO(capped << " capped, " << below << " below the cap");
+  CHECK(capped > 20000);
+  CHECK(below > 20000);
+}
