@@ -29,6 +29,9 @@ struct Motion {
   // acceleration and jerk so that the coupled lift axis stays within its
   // overload range. Infinite: none.
   Limits path_caps = Limits::none();
+  // The block lies in a lift range (set with path_caps): a corner there
+  // keeps the curve whose speed the lift's landing allows for (ContourBuilder).
+  bool in_lift_range = false;
 };
 
 // #DISTANCE PROG START ON / OFF (modal) / CLEAR (DPS-2).

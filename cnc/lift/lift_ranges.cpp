@@ -209,6 +209,7 @@ std::vector<LiftRange> prepare_lift_ranges(std::vector<Block>& blocks, const Mac
         block.transition = BlockTransition::standard;
       block.hsc.on = false;  // KRN-9: a spline would not keep the range's caps per block
       block.motion.path_caps = capped(block.motion.path_caps, caps);
+      block.motion.in_lift_range = true;
     }
   }
   suppress_contouring_at_ends(blocks, ranges, next_motion, machine);

@@ -74,39 +74,129 @@ double kappa_cap(const Corner& corner, double chord) {
 
 }  // namespace
 
-double ContourBuilder::dev_distance(double path_dev, const std::vector<double>& t1, const std::vector<double>& t2) {
+double ContourBuilder::dev_distance(double deviation, const std::vector<double>& t1, const std::vector<double>& t2,
+                                    double tangent_scale) {
   const double cos_theta = std::clamp(dot(t1, t2), -1.0, 1.0);
   const double c = std::sqrt((1 + cos_theta) / 2), s = std::sqrt((1 - cos_theta) / 2);
   if (!(s > tolerance::direction)) return inf;
-  return (path_dev / 2) * 16 / ((16 - 10 * c) * s);
+  return deviation * 16 / ((16 - 10 * tangent_scale * c) * s);
 }
 
-double ContourBuilder::corner_distance(const Open& a, const PathSegment& b, const Corner& corner,
-                                       double d_max) const {
-  if (!needs_curve(a.full, b)) return 0;
+namespace {
+// No curve can meet one from d before the end of a block of length `len`
+// that began with a curve of d_start (0: none) to d into a block of length
+// `len_b`: the next curve takes at most half of len_b (d_max), and what a
+// curve leaves of a block is absorbed below absorbed_share (add()).
+bool lone_curve(double len, double d_start, double d, double len_b) {
+  const bool meets_before = d_start > 0 && len - d_start - d < absorbed_share * len + shortest_mm;
+  const bool may_meet_after = len_b - d - len_b / 2 < absorbed_share * len_b + shortest_mm;
+  return !meets_before && !may_meet_after;
+}
+
+// Time a corner passed at v along a curve of `length` costs against passing
+// it at the feed line.v: braking to v and back (point-symmetric in time,
+// so at the mean velocity) and the curve at v.
+double corner_time_loss(double v, double length, const Limits& line) {
+  if (!(v > 0)) return inf;
+  const double dv = std::max(0.0, line.v - v);
+  const double t = dv >= line.a * line.a / line.j ? dv / line.a + line.a / line.j : 2 * std::sqrt(dv / line.j);
+  return t * dv / line.v + length * (1 / v - 1 / line.v);
+}
+
+// The tangent scale whose curve is the velocity blend of a turn: 1 / cos(θ/2).
+double turn_tangent_scale(const std::vector<double>& t1, const std::vector<double>& t2) {
+  return 1 / std::sqrt((1 + std::clamp(dot(t1, t2), -1.0, 1.0)) / 2);
+}
+}  // namespace
+
+ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const PathSegment& b, const Motion& after,
+                                                         const Corner& corner, double d_max) const {
+  if (!needs_curve(a.full, b)) return {};
   const double len = a.full.length();
   const std::vector<double> t1 = a.full.tangent(len), t2 = b.tangent(0);
-  if (dot(t1, t2) < cos_sharpest) return 0;
+  if (dot(t1, t2) < cos_sharpest) return {};
   const bool dev = corner.mode.type == ContourMode::Type::dev;
-  double d = std::min(d_max, dev ? dev_distance(corner.mode.path_dev, t1, t2) : corner.mode.dist);
-  if (!dev) return d >= shortest_mm ? d : 0;
+  if (!dev) {
+    const double d = std::min(d_max, corner.mode.dist);
+    return {d >= shortest_mm ? d : 0, false};
+  }
+  // A lone corner's curve keeps the blocks' own end curvatures: all of
+  // PATH_DEV is for its turn (issue 36 item 4: the corner speed grows with
+  // deviation^(2/3)), where that costs less time than half of it.
+  // Between lines the curve takes the turn's shape; next to an arc its ends'
+  // tangents and curvatures are the arc's at d, not the corner's, and a
+  // longer tangent would bend it away from the arc (fuzz contour 39000199:
+  // a G03 of r 4.8 um into a line, the curve 28 % longer than the path it
+  // replaced).
+  const bool arcs = a.full.is_arc() || b.is_arc();
+  const double turn = arcs ? 1.0 : turn_tangent_scale(t1, t2);
+  // (A hair inside PATH_DEV: on it to round-off, the check below shrank it
+  // by 0.7.)
+  const double d_lone = std::min(d_max, dev_distance(corner.mode.path_dev * (1 - 1e-9), t1, t2, turn));
+  // Not in a lift range nor at its ends: Advanced Lifting times its landing
+  // by the programmed distance left and the velocity of the cycle before;
+  // a lone curve across the range's end at the feed, covering more
+  // programmed distance per cycle than its length, left the range a cycle
+  // before the lift axis had landed (the test "LIFT-2 KRN-6 G261: the path
+  // passes the corners into and out of an Advanced Lifting range", PATH_DEV
+  // 0.5).
+  const bool lone = lone_curve(len, a.d_start, d_lone, b.length()) && !a.motion().in_lift_range &&
+                    !after.in_lift_range;
   // With arcs (and as a check for lines): shrink until the curve with the
-  // ends' own curvatures passes within half of PATH_DEV of the corner and,
-  // next to an arc, of the path it replaces: at a tangent joint with a
+  // ends' own curvatures passes within the budget of the corner and, next
+  // to an arc, of the path it replaces: at a tangent joint with a
   // curvature step the curve passes the joint itself but leaves the arcs
   // between (issue 36: arcs of radius 7 and 15 in an S, 0.060 mm from the
   // path with PATH_DEV 0.01).
   const std::vector<double> programmed_corner = a.full.end();
-  const bool arcs = a.full.is_arc() || b.is_arc();
-  for (int attempt = 0; attempt < 60 && d >= shortest_mm; ++attempt) {
-    const ContourCurve curve({a.full.position(len - d), a.full.tangent(len - d), a.full.curvature(len - d)},
-                             {b.position(d), b.tangent(d), b.curvature(d)});
-    if (curve.distance_to(programmed_corner) <= corner.mode.path_dev / 2 &&
-        (!arcs || deviation(curve, a.full, len - d, b, d) <= corner.mode.path_dev / 2))
-      return d;
-    d *= 0.7;
-  }
-  return 0;
+  struct Fit {
+    double d = 0;
+    std::optional<ContourCurve> curve;
+  };
+  auto fit = [&](double budget, double d, double scale) {
+    for (int attempt = 0; attempt < 60 && d >= shortest_mm; ++attempt) {
+      ContourCurve curve({a.full.position(len - d), a.full.tangent(len - d), a.full.curvature(len - d)},
+                         {b.position(d), b.tangent(d), b.curvature(d)}, scale);
+      if (curve.distance_to(programmed_corner) <= budget &&
+          (!arcs || deviation(curve, a.full, len - d, b, d) <= budget))
+        return Fit{d, std::move(curve)};
+      d *= 0.7;
+    }
+    return Fit{};
+  };
+  const double half = corner.mode.path_dev / 2;
+  const Fit shared = fit(half, std::min(d_max, dev_distance(half, t1, t2)), 1.0);
+  if (!lone || !shared.curve) return {shared.d, false, 1};
+  const Fit whole = fit(corner.mode.path_dev, d_lone, turn);
+  if (!whole.curve) return {shared.d, false, 1};
+  // Of the curve a corner would have next to others (half of PATH_DEV, its
+  // limits in thirds), the turn in all of PATH_DEV, and the turn in half of
+  // it (the same shape at half the size: k doubles, k' quadruples): the one
+  // that costs the least time. At wide angles a curve is slow whatever its size, and
+  // the shorter one costs less.
+  // The programmed feed and the axes' limits, not a lift range's caps: the
+  // curve is the same whatever caps its halves get.
+  Limits line{std::min(a.motion().feed, after.feed), inf, inf};
+  for (size_t i = 0; i < t1.size(); ++i)
+    if (t1[i] != 0 || t2[i] != 0) {
+      const AxisConfig& axis = machine_.axes[i];
+      line = {std::min(line.v, axis.v_max), std::min(line.a, axis.a_max), std::min(line.j, axis.j_max)};
+    }
+  // The axes' acceleration and jerk divided by `divisor` go to k v² and
+  // k' v³ (PathSegment::set_contour_limits); `scale`: of the curve's size.
+  auto loss = [&](const ContourCurve& curve, double divisor_a, double divisor_j, double scale) {
+    const ContourCurve::AxisBounds bounds = curve.bounds(0, curve.length());
+    const double v_a = std::sqrt(scale * line.a / (divisor_a * bounds.curvature_norm));
+    const double v_j = std::cbrt(scale * scale * line.j / (divisor_j * bounds.curvature_rate_norm));
+    return corner_time_loss(std::min({line.v, v_a, v_j}), scale * curve.length(), line);
+  };
+  constexpr double lone_divisor = ContourJoint::lone_curvature_divisor;
+  const double loss_shared = loss(*shared.curve, 2, 3, 1);
+  const double loss_whole = loss(*whole.curve, lone_divisor, lone_divisor, 1);
+  const double loss_half = loss(*whole.curve, lone_divisor, lone_divisor, 0.5);
+  if (loss_shared <= std::min(loss_whole, loss_half)) return {shared.d, false, 1};
+  if (loss_whole <= loss_half) return {whole.d, true, turn};
+  return {fit(half, whole.d / 2, turn).d, true, turn};
 }
 
 PathSegment ContourBuilder::piece_of(const Open& block, double s_from, double s_to) const {
@@ -122,8 +212,8 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   PendingCurve& p = *pending_;
   Open& a = *open_;  // the block after the corner
   auto joint = std::make_shared<ContourJoint>();
-  joint->curve = std::make_shared<const ContourCurve>(p.start,
-                                                      ContourCurve::End{p.end.point, p.end.tangent, end_curvature});
+  joint->curve = std::make_shared<const ContourCurve>(
+      p.start, ContourCurve::End{p.end.point, p.end.tangent, end_curvature}, p.tangent_scale);
   const double len = a.full.length();
   // Split where the programmed shares meet, so that both halves count the
   // same share of programmed distance per path length.
@@ -132,6 +222,7 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   const double split = length * share_before / (share_before + share_after);
   const double covered = a.full.covered_distance() * a.d_start / len;
   a.covered_used += covered;
+  joint->lone_corner = p.lone;
   joint->parts = {{p.from_index, p.from_covered, p.from_velocity, p.from_caps, split},
                   {a.piece.block, covered, a.full.programmed_velocity(), a.motion().path_caps, length}};
   std::shared_ptr<const ContourJoint> shared = std::move(joint);
@@ -172,7 +263,10 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
   if (open_) {
     Open& a = *open_;
     const double len = a.full.length();
-    const double d = stop_before ? 0 : corner_distance(a, segment, a.out(), std::min(len, segment.length()) / 2);
+    const CornerCurve corner =
+        stop_before ? CornerCurve{}
+                    : corner_curve(a, segment, piece.motion, a.out(), std::min(len, segment.length()) / 2);
+    const double d = corner.d;
     // Two curves that leave less than this of the block between them meet
     // (the rest goes to the curve after it): chords of a CAM polyline differ
     // in length by their rounding, and a micro-line between two curves would
@@ -237,7 +331,9 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
       p.from_velocity = a.full.programmed_velocity();
       p.from_caps = a.motion().path_caps;
       p.from_covered = a.full.covered_distance() - a.covered_used;
-      p.kappa_cap = kappa_cap(a.out(), distance(p.start.point, p.end.point));
+      p.kappa_cap = corner.lone ? 0.0 : kappa_cap(a.out(), distance(p.start.point, p.end.point));
+      p.lone = corner.lone;
+      p.tangent_scale = corner.tangent_scale;
       p.d = d;
       p.d_before = len - (vanished ? a.d_start : len - d);
       p.tangent_before = a.full.tangent(len);

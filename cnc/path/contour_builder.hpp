@@ -65,11 +65,14 @@ class ContourBuilder {
   // not come here (an HSC spline, KRN-9): the path stands before it.
   bool take_exact_stop() { return std::exchange(exact_stop_next_, false); }
 
-  // The corner distance for a corner between tangents t1, t2 (unit):
-  // PATH_DEV with the curve's end curvatures 0 (lines) is reached at
-  // d (16 - 10 cos(θ/2)) sin(θ/2) / 16 from the corner; half of it is
-  // budgeted for that, half for the curvature the ends may get later.
-  static double dev_distance(double path_dev, const std::vector<double>& t1, const std::vector<double>& t2);
+  // The corner distance d at which a curve between tangents t1, t2 (unit)
+  // with end curvatures 0 (lines) and end tangents tangent_scale (λ) times
+  // its chord passes `deviation` from the corner:
+  // d (16 - 10 λ cos(θ/2)) sin(θ/2) / 16 = deviation. A curve another
+  // curve may meet gets half of PATH_DEV (the other half is for the
+  // curvature its ends get then), a lone corner's up to all of it.
+  static double dev_distance(double deviation, const std::vector<double>& t1, const std::vector<double>& t2,
+                             double tangent_scale = 1);
 
  private:
   struct Open {
@@ -89,6 +92,8 @@ class ContourBuilder {
     double from_velocity = 0, from_covered = 0;
     Limits from_caps;  // the lift's caps of its block
     double kappa_cap = 0;  // largest curvature the end may get (PATH_DEV)
+    bool lone = false;  // no other curve can meet it (ContourJoint::lone_corner)
+    double tangent_scale = 1;  // of its ContourCurve
     double d = 0;
     double d_before = 0;  // programmed length it replaces before the corner
     std::vector<double> tangent_before;  // of the block before the corner, at the corner
@@ -101,7 +106,14 @@ class ContourBuilder {
   void emit_middle(double d_end, std::vector<PathPiece>& out);
   void close(std::vector<PathPiece>& out);
   PathSegment piece_of(const Open& block, double s_from, double s_to) const;
-  double corner_distance(const Open& a, const PathSegment& b, const Corner& corner, double d_max) const;
+  struct CornerCurve {
+    double d = 0;  // the corner distance: the curve from d before the corner to d after it
+    bool lone = false;
+    double tangent_scale = 1;  // of its ContourCurve: a lone corner's is the turn's
+  };
+  // b: the geometry of the block after the corner, `after` its motion.
+  CornerCurve corner_curve(const Open& a, const PathSegment& b, const Motion& after, const Corner& corner,
+                           double d_max) const;
 
   const MachineConfig& machine_;
   std::optional<Open> open_;

@@ -24,11 +24,11 @@ constexpr double bound_margin = 1.1;
 
 }  // namespace
 
-ContourCurve::ContourCurve(const End& start, const End& end) : start_(start), end_(end) {
+ContourCurve::ContourCurve(const End& start, const End& end, double tangent_scale) : start_(start), end_(end) {
   const size_t n = start.point.size();
   double chord_sq = 0;
   for (size_t i = 0; i < n; ++i) chord_sq += (end.point[i] - start.point[i]) * (end.point[i] - start.point[i]);
-  const double L = std::sqrt(chord_sq);
+  const double L = std::sqrt(chord_sq) * tangent_scale;
   coefficients_.resize(n);
   for (size_t i = 0; i < n; ++i) {
     // Bezier control points of the quintic Hermite curve.

@@ -3,8 +3,12 @@
 // polynomial from one point to another that takes the position, the unit
 // tangent and the curvature vector (d²x/ds²) of the path at both ends, so
 // that the path stays continuous in tangent and curvature through it.
-// Quintic Hermite form with |dP/du| = L (the chord) at both ends and
-// d²P/du² = L² k there. Evaluated by path length s (0 .. length()).
+// Quintic Hermite form with |dP/du| = L at both ends and d²P/du² = L² k
+// there, L = the chord times `tangent_scale`. Evaluated by path length s
+// (0 .. length()). With tangent_scale = 1 / cos(θ/2) (θ between the end
+// tangents) and end curvatures 0 the curve's velocity is a blend of the
+// two tangents alone, dP/du = L (t1 + (t2 - t1) (3u² - 2u³)): the shape of
+// a jerk-limited turn (docs/CONTOURING.md "Corner speed bound").
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -19,7 +23,7 @@ class ContourCurve {
   struct End {
     std::vector<double> point, tangent, curvature;  // per axis
   };
-  ContourCurve(const End& start, const End& end);
+  ContourCurve(const End& start, const End& end, double tangent_scale = 1);
 
   double length() const { return table_s_.back(); }
   std::vector<double> position(double s) const;
@@ -78,6 +82,14 @@ struct ContourJoint {
     double end = 0;  // where on the curve it ends (the last: exactly the curve's length)
   };
   std::vector<Part> parts;  // in the curve's direction
+  // A corner's curve no other curve meets (ContourBuilder): short, between
+  // the blocks' own geometry, which the path passes at about one velocity.
+  // Its limits give the curvature terms most of the axes' acceleration and
+  // jerk (PathSegment::set_contour_limits).
+  bool lone_corner = false;
+  // There the axes' acceleration and jerk divided by this (2/3 of them) go
+  // to the curvature terms k v² and k' v³.
+  static constexpr double lone_curvature_divisor = 1.5;
   double begin(size_t part) const { return part == 0 ? 0.0 : parts[part - 1].end; }
   // What [s_from, s_to] of the curve covers of the programmed distance.
   double covered(double s_from, double s_to) const;

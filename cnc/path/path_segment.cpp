@@ -91,30 +91,50 @@ double on_grid(double value) {
 // As on an arc (set_arc_limits), with the curve's own bounds: an axis sees
 // t_i a_t + k_i v² (acceleration) and t_i j_t + 3 k_i v a_t + k_i' v³
 // (jerk). Half the acceleration goes to each term, a third of the jerk to
-// each. |t_i| <= 1 is used for the tangential terms, so that the limits do
-// not change with the direction along a polyline.
+// each. A lone corner's curve that limits the path below its feed is
+// passed at about one velocity: there the curvature terms get 2/3 of both,
+// a_t the rest and j_t and 3 k v a_t a sixth each (issue 36 item 4: the
+// corner's speed against the jerk-limited turn; 4/5 made the path slower
+// on CAM programs, where it brakes and accelerates next to such curves;
+// where the feed is below the curve's limit the path keeps the thirds).
+// |t_i| <= 1 is used for the tangential terms, so that the limits do not
+// change with the direction along a polyline.
 void PathSegment::set_contour_limits(const MachineConfig& machine, double programmed_velocity) {
+  // The axis' limit divided by these is each term's share.
+  struct Shares {
+    double curvature_a, path_a, curvature_j, turning_j, path_j;
+  };
+  constexpr double lone = ContourJoint::lone_curvature_divisor;
+  constexpr Shares thirds{2, 2, 3, 3, 3}, turn{lone, 3, lone, 6, 6};
   const ContourCurve::AxisBounds b = joint_->curve->bounds(s_from_, s_from_ + length_);
   // The lowest limits of the axes that move, against the norms of k and
   // dk/ds (|k_i| <= |k|): the same limits whichever way a polyline turns.
-  double v = inf, a_axis = inf, j_axis = inf;
+  double v_axis = inf, a_axis = inf, j_axis = inf;
   for (size_t i = 0; i < start_.size(); ++i) {
     if (!(b.tangent[i] > 0) && !(b.curvature[i] > 0)) continue;  // the axis does not move here
     const AxisConfig& axis = machine.axes[i];
-    v = std::min(v, axis.v_max);
+    v_axis = std::min(v_axis, axis.v_max);
     a_axis = std::min(a_axis, axis.a_max);
     j_axis = std::min(j_axis, axis.j_max);
   }
   const double k = b.curvature_norm, dk = b.curvature_rate_norm;
-  if (k > 0) v = std::min(v, std::sqrt(a_axis / (2 * k)));
-  if (dk > 0) v = std::min(v, std::cbrt(j_axis / (3 * dk)));
-  v = on_grid(v);
+  const auto velocity_limit = [&](const Shares& share) {
+    double v = v_axis;
+    if (k > 0) v = std::min(v, std::sqrt(a_axis / (share.curvature_a * k)));
+    if (dk > 0) v = std::min(v, std::cbrt(j_axis / (share.curvature_j * dk)));
+    return on_grid(v);
+  };
+  const double v_feed = programmed_velocity * machine.override_max_percent / 100.0;
+  double v = velocity_limit(thirds);
+  const bool passed_at_its_limit = joint_->lone_corner && v < v_feed;
+  const Shares& share = passed_at_its_limit ? turn : thirds;
+  if (passed_at_its_limit) v = velocity_limit(turn);
   // The 3 k v a term at the highest velocity the path can have here: the
   // feed at the highest override, or the curve's own limit.
-  const double v_drive = std::min(v, programmed_velocity * machine.override_max_percent / 100.0);
-  double a = a_axis / 2;
-  if (k > 0) a = std::min(a, j_axis / (9 * k * v_drive));
-  limits_ = {v, on_grid(a), j_axis / 3};
+  const double v_drive = std::min(v, v_feed);
+  double a = a_axis / share.path_a;
+  if (k > 0) a = std::min(a, j_axis / (3 * share.turning_j * k * v_drive));
+  limits_ = {v, on_grid(a), j_axis / share.path_j};
   planar_ = 0;
 }
 

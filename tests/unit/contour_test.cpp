@@ -174,7 +174,7 @@ TEST_CASE("KRN-6 corner distance: PATH_DEV is met at the programmed corner of tw
     const double d = ContourBuilder::dev_distance(e, t1, t2);
     const ContourCurve c({{-d, 0, 0}, t1, {0, 0, 0}}, {{d * t2[0], d * t2[1], 0}, t2, {0, 0, 0}});
     INFO("angle " << angle_deg);
-    CHECK(c.distance_to({0, 0, 0}) == Approx(e / 2).epsilon(1e-6));
+    CHECK(c.distance_to({0, 0, 0}) == Approx(e).epsilon(1e-6));
   }
 }
 

@@ -193,3 +193,54 @@ TEST_CASE("KRN-6 DDTG-2 the look-ahead contours a piece that says how the path l
     CHECK(covered == Approx(20));  // DPS-1: the programmed lengths, contoured or not
   }
 }
+
+TEST_CASE("KRN-6 issue 36 item 4: a lone corner's curve takes all of PATH_DEV where that costs less time; one another "
+          "curve may meet takes half",
+          "[path][contour]") {
+  const MachineConfig machine = test::xyz_machine();
+  // The curve at a corner of `degrees` after a 20 mm line into a line of `after` mm, and where it passes the corner.
+  struct Made {
+    std::shared_ptr<const ContourJoint> joint;
+    double from_corner = 0;
+  };
+  auto curve_at = [&](double degrees, double after) {
+    const double th = degrees * M_PI / 180;
+    const std::vector<double> corner{20, 0, 0}, end{20 + after * std::cos(th), after * std::sin(th), 0};
+    MotionPiece a = piece_of(line({0, 0, 0}, corner), 20), b = piece_of(line(corner, end), after);
+    a.block = 0;
+    b.block = 1;
+    b.out = Corner{};
+    a.motion.feed = b.motion.feed = 100;
+    ContourBuilder builder(machine);
+    builder.add(a, a.segment(machine), false);
+    Made made;
+    for (PathPiece& p : builder.add(b, b.segment(machine), false))
+      if (p.segment.is_contour_curve()) made.joint = p.segment.joint();
+    if (made.joint) made.from_corner = made.joint->curve->distance_to(corner);
+    return made;
+  };
+  const double path_dev = ContourMode{}.path_dev;
+  // 10°: the turn in all of PATH_DEV, passed faster than the curve it
+  // replaces (contour_bench --only corners: 19.9 mm/s against 9.9).
+  const Made lone = curve_at(10, 20);
+  REQUIRE(lone.joint);
+  CHECK(lone.joint->lone_corner);
+  CHECK(lone.from_corner > 0.9 * path_dev);
+  CHECK(lone.from_corner <= path_dev);
+  // The same corner into a block the next curve may take half of: half.
+  const Made shared = curve_at(10, 0.3);
+  REQUIRE(shared.joint);
+  CHECK_FALSE(shared.joint->lone_corner);
+  CHECK(shared.from_corner <= path_dev / 2);
+  CHECK(shared.from_corner > 0.45 * path_dev);
+  // 150°: any curve is slow there; the shorter, shared one costs less time.
+  const Made wide = curve_at(150, 20);
+  REQUIRE(wide.joint);
+  CHECK_FALSE(wide.joint->lone_corner);
+  CHECK(wide.from_corner <= path_dev / 2);
+  // The lone curve's limits give the curvature more of the jerk: its
+  // velocity limit is above the shared curve's of the same corner.
+  PathSegment lone_half(lone.joint, 0, lone.joint->parts[0].end, false, machine);
+  PathSegment shared_half(shared.joint, 0, shared.joint->parts[0].end, false, machine);
+  CHECK(lone_half.limits().v > 1.5 * shared_half.limits().v);
+}
