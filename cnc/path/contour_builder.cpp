@@ -120,9 +120,9 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
     const double d = std::min(d_max, corner.mode.dist);
     return {d >= shortest_mm ? d : 0, false};
   }
-  // A lone corner's curve keeps the blocks' own end curvatures: all of
-  // PATH_DEV is for its turn (issue 36 item 4: the corner speed grows with
-  // deviation^(2/3)), where that costs less time than half of it.
+  // A lone corner's curve keeps the blocks' own end curvatures: it may use
+  // all of PATH_DEV for its turn (issue 36 item 4: the corner speed grows
+  // with deviation^(2/3)); which curve it gets, see below.
   // Between lines the curve takes the turn's shape; next to an arc its ends'
   // tangents and curvatures are the arc's at d, not the corner's, and a
   // longer tangent would bend it away from the arc (fuzz contour 39000199:
@@ -172,8 +172,8 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
   // Of the curve a corner would have next to others (half of PATH_DEV, its
   // limits in thirds), the turn in all of PATH_DEV, and the turn in half of
   // it (the same shape at half the size: k doubles, k' quadruples): the one
-  // that costs the least time. At wide angles a curve is slow whatever its size, and
-  // the shorter one costs less.
+  // that costs the least time. At wide angles a curve is slow whatever its
+  // size, and the shorter one costs less.
   // The programmed feed and the axes' limits, not a lift range's caps: the
   // curve is the same whatever caps its halves get.
   Limits line{std::min(a.motion().feed, after.feed), inf, inf};
