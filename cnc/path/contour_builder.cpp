@@ -182,18 +182,17 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
       const AxisConfig& axis = machine_.axes[i];
       line = {std::min(line.v, axis.v_max), std::min(line.a, axis.a_max), std::min(line.j, axis.j_max)};
     }
-  // The axes' acceleration and jerk divided by `divisor` go to k v² and
-  // k' v³ (PathSegment::set_contour_limits); `scale`: of the curve's size.
-  auto loss = [&](const ContourCurve& curve, double divisor_a, double divisor_j, double scale) {
+  // With the limits' shares of PathSegment::set_contour_limits; `scale`: of
+  // the curve's size.
+  auto loss = [&](const ContourCurve& curve, const ContourJoint::LimitShares& share, double scale) {
     const ContourCurve::AxisBounds bounds = curve.bounds(0, curve.length());
-    const double v_a = std::sqrt(scale * line.a / (divisor_a * bounds.curvature_norm));
-    const double v_j = std::cbrt(scale * scale * line.j / (divisor_j * bounds.curvature_rate_norm));
+    const double v_a = std::sqrt(scale * line.a / (share.curvature_a * bounds.curvature_norm));
+    const double v_j = std::cbrt(scale * scale * line.j / (share.curvature_j * bounds.curvature_rate_norm));
     return corner_time_loss(std::min({line.v, v_a, v_j}), scale * curve.length(), line);
   };
-  constexpr double lone_divisor = ContourJoint::lone_curvature_divisor;
-  const double loss_shared = loss(*shared.curve, 2, 3, 1);
-  const double loss_whole = loss(*whole.curve, lone_divisor, lone_divisor, 1);
-  const double loss_half = loss(*whole.curve, lone_divisor, lone_divisor, 0.5);
+  const double loss_shared = loss(*shared.curve, ContourJoint::thirds, 1);
+  const double loss_whole = loss(*whole.curve, ContourJoint::lone_shares, 1);
+  const double loss_half = loss(*whole.curve, ContourJoint::lone_shares, 0.5);
   if (loss_shared <= std::min(loss_whole, loss_half)) return {shared.d, false, 1};
   if (loss_whole <= loss_half) return {whole.d, true, turn};
   return {fit(half, whole.d / 2, turn).d, true, turn};

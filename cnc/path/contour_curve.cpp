@@ -50,19 +50,9 @@ ContourCurve::ContourCurve(const End& start, const End& end, double tangent_scal
     table_s_[k + 1] = table_s_[k] + s_between(double(k) / intervals, double(k + 1) / intervals);
 }
 
-std::vector<double> ContourCurve::derivative(double u, int n) const {
-  std::vector<double> d(coefficients_.size());
-  for (size_t i = 0; i < d.size(); ++i) {
-    const std::array<double, 6>& c = coefficients_[i];
-    double sum = 0;
-    for (int p = 5; p >= n; --p) {
-      double factor = 1;
-      for (int q = 0; q < n; ++q) factor *= p - q;
-      sum = sum * u + factor * c[static_cast<size_t>(p)];
-    }
-    d[i] = sum;
-  }
-  return d;
+double ContourCurve::offset(size_t i, double u) const {
+  const std::array<double, 6>& c = coefficients_[i];
+  return c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * (c[4] + u * c[5]))));
 }
 
 double ContourCurve::speed(double u) const {
@@ -105,8 +95,9 @@ bool at_end(double s, double length) { return s >= length * (1 - tolerance::same
 std::vector<double> ContourCurve::position(double s) const {
   if (at_start(s)) return start_.point;
   if (at_end(s, length())) return end_.point;
-  std::vector<double> p = derivative(u_at(s), 0);
-  for (size_t i = 0; i < p.size(); ++i) p[i] += start_.point[i];
+  const double u = u_at(s);
+  std::vector<double> p(start_.point.size());
+  for (size_t i = 0; i < p.size(); ++i) p[i] = offset(i, u) + start_.point[i];
   return p;
 }
 
@@ -114,7 +105,7 @@ void ContourCurve::frame(double u, Frame& f) const {
   const size_t n = coefficients_.size();
   for (std::vector<double>* v : {&f.t, &f.k, &f.dk, &f.r, &f.q, &f.w, &f.normal}) v->resize(n);
   std::vector<double>&r = f.r, &q = f.q, &w = f.w, &normal = f.normal;
-  for (size_t i = 0; i < n; ++i) {  // as derivative(u, 1 .. 3)
+  for (size_t i = 0; i < n; ++i) {  // d^1..3 P / du^1..3, by Horner
     const std::array<double, 6>& c = coefficients_[i];
     r[i] = (((5 * c[5] * u + 4 * c[4]) * u + 3 * c[3]) * u + 2 * c[2]) * u + c[1];
     q[i] = ((20 * c[5] * u + 12 * c[4]) * u + 6 * c[3]) * u + 2 * c[2];
@@ -178,9 +169,7 @@ double ContourCurve::distance_to(const std::vector<double>& point) const {
   auto dist_sq = [&](double u) {
     double sum = 0;
     for (size_t i = 0; i < coefficients_.size(); ++i) {
-      const std::array<double, 6>& c = coefficients_[i];
-      const double p = c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * (c[4] + u * c[5]))));
-      const double d = p + start_.point[i] - point[i];
+      const double d = offset(i, u) + start_.point[i] - point[i];
       sum += d * d;
     }
     return sum;

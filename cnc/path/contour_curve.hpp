@@ -51,8 +51,8 @@ class ContourCurve {
   std::vector<std::array<double, 6>> coefficients_;
   End start_, end_;  // what the ends must be, exactly
   std::vector<double> table_s_;  // s at u = k / intervals
-  // d^n P / du^n at u, per axis.
-  std::vector<double> derivative(double u, int n) const;
+  // P(u) less the start point, on axis i.
+  double offset(size_t i, double u) const;
   struct Frame {
     std::vector<double> t, k, dk;  // tangent, curvature, dk/ds
     std::vector<double> r, q, w, normal;  // d^1..3 P/du^3, q - (q.t) t: kept for the next frame
@@ -87,9 +87,14 @@ struct ContourJoint {
   // Its limits give the curvature terms most of the axes' acceleration and
   // jerk (PathSegment::set_contour_limits).
   bool lone_corner = false;
-  // There the axes' acceleration and jerk divided by this (2/3 of them) go
-  // to the curvature terms k v² and k' v³.
-  static constexpr double lone_curvature_divisor = 1.5;
+  // An axis' acceleration divided by curvature_a goes to k v², by path_a to
+  // a_t; its jerk divided by curvature_j to k' v³, by turning_j to 3 k v a_t,
+  // by path_j to j_t.
+  struct LimitShares {
+    double curvature_a, path_a, curvature_j, turning_j, path_j;
+  };
+  static constexpr LimitShares thirds{2, 2, 3, 3, 3};
+  static constexpr LimitShares lone_shares{1.5, 3, 1.5, 6, 6};  // 2/3 to the curvature terms
   double begin(size_t part) const { return part == 0 ? 0.0 : parts[part - 1].end; }
   // What [s_from, s_to] of the curve covers of the programmed distance.
   double covered(double s_from, double s_to) const;

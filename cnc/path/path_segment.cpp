@@ -100,12 +100,8 @@ double on_grid(double value) {
 // |t_i| <= 1 is used for the tangential terms, so that the limits do not
 // change with the direction along a polyline.
 void PathSegment::set_contour_limits(const MachineConfig& machine, double programmed_velocity) {
-  // The axis' limit divided by these is each term's share.
-  struct Shares {
-    double curvature_a, path_a, curvature_j, turning_j, path_j;
-  };
-  constexpr double lone = ContourJoint::lone_curvature_divisor;
-  constexpr Shares thirds{2, 2, 3, 3, 3}, turn{lone, 3, lone, 6, 6};
+  using Shares = ContourJoint::LimitShares;
+  constexpr const Shares &thirds = ContourJoint::thirds, &turn = ContourJoint::lone_shares;
   const ContourCurve::AxisBounds b = joint_->curve->bounds(s_from_, s_from_ + length_);
   // The lowest limits of the axes that move, against the norms of k and
   // dk/ds (|k_i| <= |k|): the same limits whichever way a polyline turns.

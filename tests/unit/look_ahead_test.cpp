@@ -397,6 +397,29 @@ TEST_CASE("KRN-3 look-ahead: override raised while the path accelerates towards 
   }
 }
 
+// A random braking to v_exit within `distance` after reaction_s at v0,
+// TRAPEZ, limits over four decades.
+struct BrakingCase {
+  Limits lim;
+  double v_exit = 0, distance = 0, reaction_s = 0;
+
+  static BrakingCase draw(std::mt19937_64& rng, int i) {
+    std::uniform_real_distribution<double> w(0, 1);
+    BrakingCase c;
+    c.lim = {std::pow(10.0, -2 + 3 * w(rng)), std::pow(10.0, -1 + 3 * w(rng)), std::pow(10.0, 4 * w(rng))};
+    c.v_exit = i % 5 == 0 ? 0.0 : c.lim.v * w(rng) * w(rng);
+    c.distance = std::pow(10.0, -7 + 6 * w(rng));
+    c.reaction_s = i % 3 == 0 ? 0.0 : 0.001;
+    return c;
+  }
+  double covers(double v0) const {
+    return v0 * reaction_s + velocity_change_end({0, v0, 0, 0}, v_exit, lim, SlopeType::trapez).p;
+  }
+  double highest(double v_cap) const {
+    return highest_entry_velocity(v_exit, distance, v_cap, lim, SlopeType::trapez, reaction_s);
+  }
+};
+
 // Issue 36 item 3: the TRAPEZ stretch's entry velocity starts from a closed
 // form (the change covers its mean velocity times its duration) and steps
 // to the boundary; it must still be the last double from which the change
@@ -406,27 +429,21 @@ TEST_CASE("KRN-3 highest_entry_velocity is the last double that fits, from the c
   std::uniform_real_distribution<double> w(0, 1);
   long searched = 0, not_last = 0;
   for (int i = 0; i < 200000; ++i) {
-    const Limits lim{std::pow(10.0, -2 + 3 * w(rng)), std::pow(10.0, -1 + 3 * w(rng)), std::pow(10.0, 4 * w(rng))};
-    const double v_exit = i % 5 == 0 ? 0.0 : lim.v * w(rng) * w(rng);
-    const double v_cap = v_exit + lim.v * w(rng);
-    const double distance = std::pow(10.0, -7 + 6 * w(rng));
-    const double reaction_s = i % 3 == 0 ? 0.0 : 0.001;
-    auto covers = [&](double v0) {
-      return v0 * reaction_s + velocity_change_end({0, v0, 0, 0}, v_exit, lim, SlopeType::trapez).p;
-    };
-    if (covers(v_exit) > distance) continue;  // not even v_exit fits (the reaction alone is longer)
-    const double v = highest_entry_velocity(v_exit, distance, v_cap, lim, SlopeType::trapez, reaction_s);
-    REQUIRE(v >= v_exit);
+    const BrakingCase c = BrakingCase::draw(rng, i);
+    const double v_cap = c.v_exit + c.lim.v * w(rng);
+    if (c.covers(c.v_exit) > c.distance) continue;  // not even v_exit fits (the reaction alone is longer)
+    const double v = c.highest(v_cap);
+    REQUIRE(v >= c.v_exit);
     REQUIRE(v <= v_cap);
     if (v == v_cap) {
-      REQUIRE(covers(v_cap) <= distance);
+      REQUIRE(c.covers(v_cap) <= c.distance);
       continue;
     }
     ++searched;
-    REQUIRE(covers(v) <= distance);
+    REQUIRE(c.covers(v) <= c.distance);
     // The next double up does not fit (where the distance is not monotone
     // in the last bits, one a few ulp further may).
-    if (covers(std::nextafter(v, v_cap)) <= distance) ++not_last;
+    if (c.covers(std::nextafter(v, v_cap)) <= c.distance) ++not_last;
   }
   INFO(searched << " searched, " << not_last << " with the next double fitting too");
   CHECK(searched > 100000);
@@ -441,25 +458,19 @@ TEST_CASE("KRN-3 highest_entry_velocity: a v_cap within a hair of the answer is 
   std::uniform_real_distribution<double> w(0, 1);
   long capped = 0, below = 0;
   for (int i = 0; i < 100000; ++i) {
-    const Limits lim{std::pow(10.0, -2 + 3 * w(rng)), std::pow(10.0, -1 + 3 * w(rng)), std::pow(10.0, 4 * w(rng))};
-    const double v_exit = i % 5 == 0 ? 0.0 : lim.v * w(rng) * w(rng);
-    const double distance = std::pow(10.0, -7 + 6 * w(rng));
-    const double reaction_s = i % 3 == 0 ? 0.0 : 0.001;
-    auto covers = [&](double v0) {
-      return v0 * reaction_s + velocity_change_end({0, v0, 0, 0}, v_exit, lim, SlopeType::trapez).p;
-    };
-    if (covers(v_exit) > distance) continue;
-    const double answer = highest_entry_velocity(v_exit, distance, 1e300, lim, SlopeType::trapez, reaction_s);
+    const BrakingCase c = BrakingCase::draw(rng, i);
+    if (c.covers(c.v_exit) > c.distance) continue;
+    const double answer = c.highest(1e300);
     const double v_cap = answer * (1 + (2 * w(rng) - 1) * std::pow(10.0, -14 + 6 * w(rng)));
-    if (!(v_cap > v_exit)) continue;
-    const double v = highest_entry_velocity(v_exit, distance, v_cap, lim, SlopeType::trapez, reaction_s);
-    if (covers(v_cap) <= distance) {
+    if (!(v_cap > c.v_exit)) continue;
+    const double v = c.highest(v_cap);
+    if (c.covers(v_cap) <= c.distance) {
       ++capped;
       REQUIRE(v == v_cap);
     } else {
       ++below;
-      REQUIRE(covers(v) <= distance);
-      REQUIRE(covers(std::nextafter(v, v_cap)) > distance);
+      REQUIRE(c.covers(v) <= c.distance);
+      REQUIRE(c.covers(std::nextafter(v, v_cap)) > c.distance);
     }
   }
   INFO(capped << " capped, " << below << " below the cap");
