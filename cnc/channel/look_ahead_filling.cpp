@@ -207,8 +207,30 @@ void PathInterpolator::restart_here(double t) {
   refill();
 }
 
+// Within the cycle's budget, and always while the piece the path runs on
+// has none after it (a contoured block waits for the next one, a spline for
+// its fit window): its jerk share is final only once the next piece is
+// there (a curvature step into a spline halves it). Planned alone, the path
+// braked to its end at -146 mm/s^2 with the whole share, and the halved one
+// that came then could not bring a to 0 before v (fuzz hsc seeds 32,
+// 40000192: the path ran backward).
+bool PathInterpolator::may_fill() const {
+  return !look_ahead_.full() && (fill_budget_ > 0 || look_ahead_.size() < 2);
+}
+
+void PathInterpolator::filled_one() {
+  if (fill_budget_ > 0) --fill_budget_;
+}
+
+void PathInterpolator::top_up() {
+  if (look_ahead_.empty() || !may_fill()) return;
+  const size_t budget = fill_budget_;
+  refill();
+  grown_ = fill_budget_ != budget;
+}
+
 void PathInterpolator::refill_forward() {
-  while (!look_ahead_.full()) {
+  while (may_fill()) {
     const std::optional<size_t> next = program_.next_motion_block();
     if (!next) break;
     const PathSegment segment(program_[*next].motion, machine_);
@@ -219,16 +241,18 @@ void PathInterpolator::refill_forward() {
     }
     push(whole_block(*next, segment), program_.stops_before(*next));
     program_.go_on_after(*next);
+    filled_one();
   }
   if (program_.at_read_end()) look_ahead_.flush();
 }
 
 void PathInterpolator::refill_backward() {
-  while (!look_ahead_.full()) {
+  while (may_fill()) {
     const std::optional<size_t> next = program_.next_motion_block();
     if (!next) break;
     program_.go_on_after(*next);
     push(whole_block(*next, PathSegment(program_[*next].motion, machine_)));
+    filled_one();
   }
   if (program_.exhausted()) look_ahead_.flush();
 }

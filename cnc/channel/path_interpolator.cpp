@@ -233,6 +233,7 @@ void PathInterpolator::finish_front() {
   covered_before_front_ += front.segment.covered_distance();
   front_done_ += front.segment.covered_distance();
   if (front.ends_block) {
+    ++fill_budget_;  // its replacement
     observer_.finish_block(front.block_index);
     pushed_.pop_front();
     front_done_ = 0;
@@ -259,8 +260,17 @@ void PathInterpolator::forget_history() {
 }
 
 PathProgress PathInterpolator::interpolate(double t) {
-  if (!look_ahead_.empty() && (replan_ || factor_changed_)) replan(t);
-  replan_ = factor_changed_ = false;
+  top_up();
+  const PathProgress progress = move_to(t);
+  fill_budget_ = look_ahead_fill_per_cycle;  // the next cycle's
+  return progress;
+}
+
+PathProgress PathInterpolator::move_to(double t) {
+  // Replanned when the look-ahead grew: the plan ended at rest on the last
+  // block it had.
+  if (!look_ahead_.empty() && (replan_ || factor_changed_ || grown_)) replan(t);
+  replan_ = factor_changed_ = grown_ = false;
   MotionState path = path_state_at(t);
   bool reached_contour_start = false;
   // Pass every block the path has left by t; a plan that ends short of the

@@ -182,7 +182,8 @@ bool HscSpline::within_tolerance(const ContourCurve& curve, size_t from, size_t 
   if (!(curve.length() <= longest_share * polyline) || !std::isfinite(curve.length())) return false;
   const bool path = mode_.path_dev > 0, track = mode_.track_dev > 0;
   if (!path && !track) return true;
-  const std::vector<AxisConfig>& axes = machine_.axes;
+  std::vector<char> main_axis;  // by axis: out of the loops below (a name's comparison was a third of their cost)
+  for (const AxisConfig& axis : machine_.axes) main_axis.push_back(is_main_axis(axis.name) ? 1 : 0);
   const int samples = std::max(16, samples_per_block * static_cast<int>(to - from));
   for (int k = 1; k < samples; ++k) {
     const std::vector<double> q = curve.position(curve.length() * k / samples);
@@ -193,7 +194,7 @@ bool HscSpline::within_tolerance(const ContourCurve& curve, size_t from, size_t 
       const std::vector<double>& p1 = points_[i + 1];
       double along = 0, size = 0;
       for (size_t a = 0; a < q.size(); ++a)
-        if (is_main_axis(axes[a].name)) {
+        if (main_axis[a]) {
           along += (q[a] - p0[a]) * (p1[a] - p0[a]);
           size += (p1[a] - p0[a]) * (p1[a] - p0[a]);
         }
@@ -201,7 +202,7 @@ bool HscSpline::within_tolerance(const ContourCurve& curve, size_t from, size_t 
       double main = 0, track_miss = 0;
       for (size_t a = 0; a < q.size(); ++a) {
         const double miss = q[a] - (p0[a] + u * (p1[a] - p0[a]));
-        if (is_main_axis(axes[a].name)) main += miss * miss;
+        if (main_axis[a]) main += miss * miss;
         else track_miss = std::max(track_miss, std::abs(miss));
       }
       if (main < best_main) {

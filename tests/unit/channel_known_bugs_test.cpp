@@ -557,3 +557,14 @@ TEST_CASE("DPS-2 DPS-3 a search continued before #DISTANCE PROG START CLEAR and 
   // cycle instead of the continuation's 11.59 mm. It acts in program order now.
   check_seeds(fuzz::ProgramKind::commands, {15009636});
 }
+
+TEST_CASE("KRN-3 KRN-9 DPS-1 the piece the path runs on is planned with the piece after it: its jerk share is final",
+          "[channel][hsc][fuzz]") {
+  // AD (docs/FUZZ.md): the look-ahead fills over cycles (issue 36). After a
+  // short cut the path ran on its only piece while the spline after it still
+  // waited for its fit window; braking to the piece's end at -146 mm/s^2
+  // with the whole jerk share, it got the halved share of the curvature step
+  // into the spline, and a could not reach 0 before v did: the path ran
+  // backward (hsc 40000192; 32 and 31002326 of the ctest ranges alike).
+  check_seeds(fuzz::ProgramKind::hsc, {40000192, 32});
+}

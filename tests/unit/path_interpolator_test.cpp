@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <deque>
+#include <string>
 
 #include "decoder.hpp"
 #include "limit_check.hpp"
@@ -119,4 +121,64 @@ TEST_CASE("KRN-3 interpolator: a block whose geometry is not finite is never mov
   CHECK(run.path.setpoints()[1].position == 0);
   CHECK(run.path.path_velocity() == 0);
   CHECK(run.checker.finish().violations.empty());
+}
+
+namespace {
+
+// Hands the interpolator its blocks one by one, counting them (issue 17: a
+// program is streamed as the look-ahead needs it).
+struct CountingSource : BlockSource {
+  std::deque<Block> blocks;
+  size_t read = 0;
+  bool next(Block& block) override {
+    if (blocks.empty()) return false;
+    block = std::move(blocks.front());
+    blocks.pop_front();
+    ++read;
+    return true;
+  }
+};
+
+struct FinishCounter : NoObserver {
+  size_t finished = 0;
+  void finish_block(size_t) override { ++finished; }
+};
+
+}  // namespace
+
+TEST_CASE("KRN-3 interpolator: the look-ahead fills its 120 blocks over cycles, so many a cycle besides those the "
+          "path finishes, and the path starts in the first cycle (issue 36)",
+          "[interpolator]") {
+  std::string program = "N10 G01 F6000\n";
+  for (int i = 1; i <= 400; ++i) program += "X" + std::to_string(0.1 * i) + (i % 2 ? " Y0.001\n" : " Y0\n");
+  program += "M30\n";
+  const MachineConfig machine = test::xyz_machine();
+  CountingSource source;
+  for (Block& b : decode_program(program, machine, {0, 0, 0}).blocks) source.blocks.push_back(std::move(b));
+  FinishCounter observer;
+  PathInterpolator path(machine, observer);
+  logger::LimitChecker checker(machine);
+  path.load(source, 0);
+  path.set_velocity_factor(1.0);
+  path.go_on_from_standstill(0);
+  const size_t per_cycle = PathInterpolator::look_ahead_fill_per_cycle;
+  // N10 without motion and one block read ahead besides the motion blocks.
+  CHECK(source.read <= per_cycle + 2);
+  PathProgress progress = PathProgress::moving;
+  int64_t k = 0, first_moving = -1;
+  size_t full_at = 0;
+  for (; k < 20000 && progress == PathProgress::moving; ++k) {
+    const size_t read_before = source.read, finished_before = observer.finished;
+    progress = path.interpolate(static_cast<double>(k) * machine.cycle_time_s());
+    CHECK(source.read - read_before <= per_cycle + (observer.finished - finished_before));
+    if (first_moving < 0 && path.path_velocity() > 0) first_moving = k;
+    if (full_at == 0 && source.read >= LookAhead::fct_look_ahead_standard + observer.finished) full_at = static_cast<size_t>(k);
+    for (size_t i = 0; i < path.setpoints().size(); ++i) checker.add_setpoint(static_cast<int>(i), k, path.setpoints()[i].position);
+  }
+  CHECK(progress == PathProgress::all_blocks_run);
+  CHECK(first_moving == 1);  // t = 0 is the start itself
+  CHECK(full_at > 0);
+  CHECK(full_at <= LookAhead::fct_look_ahead_standard / per_cycle + 1);
+  CHECK(path.setpoints()[0].position == Approx(40));
+  CHECK(checker.finish().violations.empty());
 }
