@@ -259,7 +259,7 @@ class PathInterpolator {
   Plan plan_;
   bool replan_ = false;          // a stop was placed or released: plan again
   bool factor_changed_ = false;  // the velocity factor changed: plan again
-  bool grown_ = false;           // more blocks entered the look-ahead than the path left: plan again
+  bool grown_ = false;           // blocks entered the look-ahead at the cycle's start (top_up): plan again
   // Motion blocks that may still enter the look-ahead this cycle besides
   // those replacing the blocks the path finishes (look_ahead_filling.cpp).
   size_t fill_budget_ = look_ahead_fill_per_cycle;
