@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <deque>
+#include <iterator>
 #include <string>
 
 #include "decoder.hpp"
@@ -125,17 +126,15 @@ TEST_CASE("KRN-3 interpolator: a block whose geometry is not finite is never mov
 
 namespace {
 
-// Hands the interpolator its blocks one by one, counting them (issue 17: a
-// program is streamed as the look-ahead needs it).
-struct CountingSource : BlockSource {
-  std::deque<Block> blocks;
+// Counts the blocks the interpolator reads (issue 17: a program is
+// streamed as the look-ahead needs it).
+struct CountingSource : QueuedBlocks {
+  using QueuedBlocks::QueuedBlocks;
   size_t read = 0;
   bool next(Block& block) override {
-    if (blocks.empty()) return false;
-    block = std::move(blocks.front());
-    blocks.pop_front();
-    ++read;
-    return true;
+    const bool got = QueuedBlocks::next(block);
+    if (got) ++read;
+    return got;
   }
 };
 
@@ -153,8 +152,8 @@ TEST_CASE("KRN-3 interpolator: the look-ahead fills its 120 blocks over cycles, 
   for (int i = 1; i <= 400; ++i) program += "X" + std::to_string(0.1 * i) + (i % 2 ? " Y0.001\n" : " Y0\n");
   program += "M30\n";
   const MachineConfig machine = test::xyz_machine();
-  CountingSource source;
-  for (Block& b : decode_program(program, machine, {0, 0, 0}).blocks) source.blocks.push_back(std::move(b));
+  std::vector<Block> decoded = decode_program(program, machine, {0, 0, 0}).blocks;
+  CountingSource source(std::deque<Block>(std::make_move_iterator(decoded.begin()), std::make_move_iterator(decoded.end())));
   FinishCounter observer;
   PathInterpolator path(machine, observer);
   logger::LimitChecker checker(machine);
