@@ -290,9 +290,15 @@ int main(int argc, char** argv) {
         timed[contour] = run(machine, program, polyline, 40, 100.0, 2, nullptr, 0, {{20, 0}});
       }
       const Result& r = timed[1];
-      std::printf("%6.0f° %9.2f %9.2f %6.0f%% %9.3fs %9.3fs %8.5f %8zu\n", degrees, bound.v_lowest,
-                  r.joint_min_velocity[0], 100 * r.joint_min_velocity[0] / bound.v_lowest, r.time_s, timed[0].time_s,
-                  r.max_deviation, r.check.violations.size());
+      // "-": no cycle within 1 mm of the corner (a large PATH_DEV).
+      const double v = r.joint_min_velocity[0];
+      char lowest[32] = "-", share[16] = "-";
+      if (v < 1e300) {
+        std::snprintf(lowest, sizeof lowest, "%.2f", v);
+        std::snprintf(share, sizeof share, "%.0f%%", 100 * v / bound.v_lowest);
+      }
+      std::printf("%6.0f° %9.2f %9s %7s %9.3fs %9.3fs %8.5f %8zu\n", degrees, bound.v_lowest, lowest, share,
+                  r.time_s, timed[0].time_s, r.max_deviation, r.check.violations.size());
     }
   }
   if (csv) std::fclose(csv);
