@@ -54,9 +54,28 @@ double peak_actual_acceleration(const DriveParameters& drive, double a, double j
   const double settle = std::max(0.05, 20 * drive.velocity_lag_s + (drive.kv > 0 ? 5 / drive.kv : 0.2));
   const double ramp = a / j;
   // The -a plateau reverses the velocity halfway.
-  const std::vector<JerkPhase> phases{{j, ramp},      {0, settle},      {-j, 2 * ramp}, {0, 2 * settle + ramp},
-                                      {j, 2 * ramp}, {0, settle},      {-j, ramp},     {0, settle}};
-  return std::max(peak_under(drive, phases, 0), peak_under(drive, phases, 0.5));
+  const std::vector<JerkPhase> plateaus{{j, ramp},     {0, settle}, {-j, 2 * ramp}, {0, 2 * settle + ramp},
+                                        {j, 2 * ramp}, {0, settle}, {-j, ramp},     {0, settle}};
+  // Without plateaus (a short lift's up and down): at the tips the jerk
+  // steps by 2 j, not j, and the overshoot with it.
+  const std::vector<JerkPhase> tips{{j, ramp}, {-j, 2 * ramp}, {j, 2 * ramp}, {-j, ramp}, {0, settle}};
+  double peak = 0;
+  for (const std::vector<JerkPhase>* phases : {&plateaus, &tips})
+    for (const double offset : {0.0, 0.5}) peak = std::max(peak, peak_under(drive, *phases, offset));
+  // The velocity reversing (friction flipping) as a ramp to -a ends, or
+  // shortly before or after: both transients add (fuzz lift 40200958 and
+  // 40211326 on other machines, --vary-machine: the reversal 4 cycles before
+  // the ramp's end, the actual acceleration 7.2 % over the command and 0.2 %
+  // over P-AXIS-00442's limit).
+  // Reversal at f ramps into the ramp; the velocity for it comes from a
+  // pulse of +a' and back (a' <= a).
+  for (const double f : {0.5, 0.75, 0.9, 1.0, 1.1, 1.25, 1.5}) {
+    const double v0 = f <= 1 ? j * f * f * ramp * ramp / 2 : j * ramp * ramp / 2 + a * (f - 1) * ramp;
+    const double pulse = std::sqrt(v0 / j);
+    const std::vector<JerkPhase> reversal{{j, pulse}, {-j, pulse}, {-j, ramp}, {0, settle}, {j, ramp}, {0, settle}};
+    for (const double offset : {0.0, 0.5}) peak = std::max(peak, peak_under(drive, reversal, offset));
+  }
+  return peak;
 }
 
 double largest_followed_acceleration(const DriveParameters& drive, double limit, double j) {

@@ -10,8 +10,10 @@ namespace hil::axis {
 // The largest |actual acceleration| (the monitor's: the mean over a cycle)
 // of the drive under the hardest commands it is given with |a| <= a and
 // |j| <= j: from rest to +a, a turn to -a through a reversal of the
-// velocity (Coulomb friction flips there), back to rest; each sampled at
-// two phases of the cycle.
+// velocity (Coulomb friction flips there), back to rest; the same without
+// plateaus (+a to -a at once: the jerk steps by 2 j at the tips); a ramp
+// to -a during which the velocity reverses (the friction's step and the
+// ramp's end add); each sampled at two phases of the cycle.
 double peak_actual_acceleration(const DriveParameters& drive, double a, double j);
 
 // Share of the limit kept free for what the test commands do not cover

@@ -149,6 +149,9 @@ int main(int argc, char** argv) {
   int64_t chaos = -1;
   app.add_option("--chaos-cycles", chaos, "random PLC phase in cycles instead of the seed's (with --program: as minimized)");
   app.add_flag("--minimize", shrink, "shrink each failing run's program by deleting lines while it fails alike");
+  app.add_flag("--vary-machine", options.vary_machine,
+               "each axis' v, a and j drawn from the seed (v 0.25..2x, a 0.25..4x, j 0.2..5x the fuzz machine's): "
+               "other machines");
   std::string golden_dir;
   bool write_golden = false;
   app.add_option("--golden", golden_dir,
@@ -157,6 +160,10 @@ int main(int argc, char** argv) {
   app.add_flag("--write-golden", write_golden, "write the golden traces instead (with --golden)")->needs("--golden");
   app.footer("Documentation: docs/FUZZ.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
+  if (options.vary_machine && !golden_dir.empty()) {
+    std::fprintf(stderr, "--vary-machine: the golden traces are of the fuzz machine; not with --golden\n");
+    return 2;
+  }
   if (kind_name != "all") {
     const auto kind = parse_program_kind(kind_name);
     if (!kind) {
@@ -247,8 +254,9 @@ int main(int argc, char** argv) {
     }
     if (show_events)
       for (const std::string& e : run.event_log) std::printf("  event %s\n", e.c_str());
-    std::printf("  reproduce: channel_fuzz --seed %llu --runs 1 --program-kind %s%s --print-program\n",
-                static_cast<unsigned long long>(s), to_string(run.kind), quiet_plc ? " --quiet-plc" : "");
+    std::printf("  reproduce: channel_fuzz --seed %llu --runs 1 --program-kind %s%s%s --print-program\n",
+                static_cast<unsigned long long>(s), to_string(run.kind), quiet_plc ? " --quiet-plc" : "",
+                options.vary_machine ? " --vary-machine" : "");
     if (print_program && runs > 1) std::printf("%s", run.program.text.c_str());
     if (shrink) minimize(run, options, !no_fork);
     std::fflush(stdout);

@@ -25,6 +25,11 @@ Limits advanced_lifting_limits(const AxisConfig& axis, double cycle_time_s) {
   return {axis.v_max, it->second, axis.j_max};
 }
 
+void prepare_advanced_lifting_limits(const MachineConfig& machine) {
+  if (machine.lift_method != LiftMethod::time_based) return;
+  for (const AxisConfig& axis : machine.axes) advanced_lifting_limits(axis, machine.cycle_time_s());
+}
+
 Limits lifting_limits(const AxisConfig& axis, double factor) {
   return {axis.v_max, std::min(axis.a_max, factor * axis.a_max / 2), lifting_profile_jerk_share * axis.j_max};
 }

@@ -14,6 +14,10 @@ namespace hil::cnc {
 // The acceleration is the largest the machine file's drive model follows
 // within 99.5 % of that limit (axis/drive_response); memoised per thread.
 Limits advanced_lifting_limits(const AxisConfig& axis, double cycle_time_s);
+// Computes them for every axis of a machine that lifts time-based, on this
+// thread, ahead of the run: 10-50 ms an axis, which a real-time run would
+// otherwise spend in the cycle that decodes its first LIFT_START.
+void prepare_advanced_lifting_limits(const MachineConfig& machine);
 
 // Lifting (path-based) couples the lift axis to the path parameter q: its
 // acceleration is z_qq v^2 + z_q a_path, its jerk z_qqq v^3 + 3 z_qq v

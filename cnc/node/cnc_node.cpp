@@ -18,6 +18,7 @@
 #include "cycle_loop.hpp"
 #include "cycle_messages.hpp"
 #include "inbox.hpp"
+#include "lift_limits.hpp"
 #include "lock_step.hpp"
 #include "messages.hpp"
 #include "real_time_answers.hpp"
@@ -85,6 +86,7 @@ class CncNode : public cnc::CyclePolicy {
     if (!wait_for_participants()) return 3;
     publish_manifest();
     cnc::Channel channel(scenario_.machine, scenario_.nc_program);
+    cnc::prepare_advanced_lifting_limits(scenario_.machine);  // not in a cycle
     if (realtime_) {
       lcm_support::publish_real_time(inbox_, process_, "cnc");
       real_time_.logger_alive(wall_us());

@@ -54,15 +54,31 @@ std::string describe(const FuzzRun& run, const Failure& f) {
   return out.str();
 }
 
+// With FuzzOptions::vary_machine, each axis' limits are drawn around the
+// fuzz machine's: v 0.25..2x, a 0.25..4x, j 0.2..5x, log-uniform, each on
+// its own (axes of unlike dynamics, slow and fast machines).
+void draw_axis_limits(MachineConfig& m, uint64_t seed) {
+  Rng rng(seed ^ 0x6d616368696e65);  // "machine"
+  for (AxisConfig& axis : m.axes) {
+    axis.v_max = axis.v_rapid = axis.v_max * rng.log_uniform(0.25, 2);
+    axis.a_max *= rng.log_uniform(0.25, 4);
+    axis.j_max *= rng.log_uniform(0.2, 5);
+  }
+  m.name += " (varied)";
+}
+
 // Lift programs run on a machine that lifts time-based (even seeds) or
 // path-based, with one of three Z drives by seed / 2 (LIFT-2: Advanced
 // Lifting plans for the drive): config/xyz_machine.yaml's; a stiff one
 // (j_max 90,000, P-AXIS-00441 / 00442 1500 / 1600); a second-order velocity
 // loop with little damping and Coulomb friction.
 MachineConfig machine_of(const FuzzRun& run) {
-  if (run.kind != ProgramKind::lift) return xyz_fuzz_machine(run.override_max_percent);
-  MachineConfig m = xyz_fuzz_machine(run.override_max_percent,
-                                     run.seed % 2 == 0 ? LiftMethod::time_based : LiftMethod::path_based);
+  const bool lift = run.kind == ProgramKind::lift;
+  LiftMethod method = LiftMethod::none;
+  if (lift) method = run.seed % 2 == 0 ? LiftMethod::time_based : LiftMethod::path_based;
+  MachineConfig m = xyz_fuzz_machine(run.override_max_percent, method);
+  if (run.varied_machine) draw_axis_limits(m, run.seed);
+  if (!lift) return m;
   AxisConfig& z = m.axes[2];
   switch (run.seed / 2 % 3) {
     case 1:
@@ -91,6 +107,7 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
   Rng rng(seed);
   run.kind = options.kind ? *options.kind : all_program_kinds[seed % std::size(all_program_kinds)];
   run.override_max_percent = rng.chance(0.5) ? 100 : 120;
+  run.varied_machine = options.vary_machine;
   const MachineConfig machine = machine_of(run);
   const double dt = machine.cycle_time_s();
   run.program = generate_program(mix_seed(seed ^ 0x5eed), {run.kind, options.min_items, options.max_items}, machine);

@@ -94,6 +94,10 @@ struct FuzzOptions {
   // dist_prog_start are not checked (the generator's expectations are gone).
   std::optional<std::string> program_text;
   std::optional<int64_t> chaos_cycles;  // instead of the seed's
+  // Other machines: each axis' v, a and j drawn from the seed, on a stream
+  // of its own, around the fuzz machine's (machine_of); false runs every
+  // seed on the machine it always had.
+  bool vary_machine = false;
 };
 
 struct Failure {
@@ -118,6 +122,7 @@ struct FuzzRun {
   ProgramKind kind = ProgramKind::mixed;
   GeneratedProgram program;
   int32_t override_max_percent = 100;
+  bool varied_machine = false;  // FuzzOptions::vary_machine
   int64_t chaos_cycles = 0;  // the random PLC phase; calm after it
   int64_t cycle_bound = 0;
   int64_t restart_cycles = 0;  // added to the bound for each reset that acted (DPS-3): a whole calm run
