@@ -60,8 +60,11 @@ double peak_actual_acceleration(const DriveParameters& drive, double a, double j
   // steps by 2 j, not j, and the overshoot with it.
   const std::vector<JerkPhase> tips{{j, ramp}, {-j, 2 * ramp}, {j, 2 * ramp}, {-j, ramp}, {0, settle}};
   double peak = 0;
-  for (const std::vector<JerkPhase>* phases : {&plateaus, &tips})
-    for (const double offset : {0.0, 0.5}) peak = std::max(peak, peak_under(drive, *phases, offset));
+  auto take = [&](const std::vector<JerkPhase>& phases) {
+    for (const double offset : {0.0, 0.5}) peak = std::max(peak, peak_under(drive, phases, offset));
+  };
+  take(plateaus);
+  take(tips);
   // The velocity reversing (friction flipping) as a ramp to -a ends, or
   // shortly before or after: both transients add (fuzz lift 40200958 and
   // 40211326 on other machines, --vary-machine: the reversal 4 cycles before
@@ -72,8 +75,7 @@ double peak_actual_acceleration(const DriveParameters& drive, double a, double j
   for (const double f : {0.5, 0.75, 0.9, 1.0, 1.1, 1.25, 1.5}) {
     const double v0 = f <= 1 ? j * f * f * ramp * ramp / 2 : j * ramp * ramp / 2 + a * (f - 1) * ramp;
     const double pulse = std::sqrt(v0 / j);
-    const std::vector<JerkPhase> reversal{{j, pulse}, {-j, pulse}, {-j, ramp}, {0, settle}, {j, ramp}, {0, settle}};
-    for (const double offset : {0.0, 0.5}) peak = std::max(peak, peak_under(drive, reversal, offset));
+    take({{j, pulse}, {-j, pulse}, {-j, ramp}, {0, settle}, {j, ramp}, {0, settle}});
   }
   return peak;
 }
