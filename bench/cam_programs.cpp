@@ -4,7 +4,8 @@
 // its corners but where it selects G61 / G261 itself), with G261 (#CONTOUR MODE [DEV
 // PATH_DEV=..]) and with #HSC ON [BSPLINE PATH_DEV=.. MERGE=1] — one line
 // added after the program's first G90. The programs: 0.1 mm chord circles
-// at 9, 4 and 3 decimals and the corpus of tests/programs. Prints per run:
+// at 9, 4 and 3 decimals, the corpus of tests/programs and real CAM output
+// from tests/programs/public. Prints per run:
 // time from the first to the last cycle of motion against the ideal (each
 // motion block's length over min(F, the axes' velocity limit along it), G00
 // at its rapid limit), the median and 5th percentile path velocity of the
@@ -17,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -224,12 +226,14 @@ std::vector<std::string> split(const std::string& list) {
 
 int main(int argc, char** argv) {
   CLI::App app{"cam_programs: CAM programs as written, with G261 and with #HSC (issue 36, KRN-6, KRN-9)"};
-  std::string programs = "surfacing_3d,engraving,plasma_profile,mixed_transitions,radius_arcs";
+  std::string programs =
+      "surfacing_3d,engraving,plasma_profile,mixed_transitions,radius_arcs,public/jscut_jsdc,public/jscut_tball";
   std::string circles = "9,4,3", ways = "written,g261,hsc";
   std::string machine_file = std::string(HIL_SOURCE_DIR) + "/config/xyz_machine.yaml";
   double path_dev = 0.01, max_time_s = 1000;
   int chords = 10000;
-  app.add_option("--programs", programs, "programs, comma separated: NAME of tests/programs/NAME.nc, or a file (a name with / or ending in .nc)")
+  app.add_option("--programs", programs, "programs, comma separated: a file, or NAME of tests/programs/NAME.nc (public/NAME: real CAM output, "
+                 "tests/programs/public/README.md)")
       ->capture_default_str();
   app.add_option("--circles", circles, "decimals of the 0.1 mm chord circles, comma separated; empty: none")
       ->capture_default_str();
@@ -256,9 +260,8 @@ int main(int argc, char** argv) {
     sources.emplace_back("chord_circle_" + d + "dec", circle.program(bench::Smoothing::none));
   }
   for (const std::string& name : split(programs)) {
-    // A name with a '/' or ending in .nc is a file of its own.
-    const bool file = name.find('/') != std::string::npos || name.rfind(".nc") == name.size() - 3;
-    const std::string path = file ? name : std::string(HIL_SOURCE_DIR) + "/tests/programs/" + name + ".nc";
+    const std::string path =
+        std::filesystem::exists(name) ? name : std::string(HIL_SOURCE_DIR) + "/tests/programs/" + name + ".nc";
     std::ifstream in(path);
     if (!in) {
       std::fprintf(stderr, "cam_programs: cannot read %s\n", path.c_str());
@@ -281,7 +284,7 @@ int main(int argc, char** argv) {
   std::printf("machine %s, PATH_DEV %s mm; time: first to last cycle of motion; v: path velocity in G01/G02/G03, "
               "mm/s; dev: largest distance from the programmed path, mm\n",
               machine.name.c_str(), dev);
-  std::printf("%-22s %-9s %8s %8s %7s %7s %7s %9s %5s %9s %9s %9s\n", "program", "way", "time_s", "ideal_s", "x_ideal",
+  std::printf("%-26s %-9s %8s %8s %7s %7s %7s %9s %5s %9s %9s %9s\n", "program", "way", "time_s", "ideal_s", "x_ideal",
               "v_med", "v_p5", "dev_mm", "viol", "us/block", "p99_us", "max_us");
   std::vector<double> start;
   {
@@ -303,15 +306,15 @@ int main(int argc, char** argv) {
       }
       // Decoded as run: the added lines shift the NC lines the interpolator shows.
       const Figures f = run(machine, text, programmed_path(text, machine, start), max_cycles);
-      std::printf("%-22s %-9s %8.2f %8.2f %6.2fx %7.1f %7.1f %9.5f %5zu %9.1f %9.0f %9.0f%s\n", name.c_str(),
+      std::printf("%-26s %-9s %8.2f %8.2f %6.2fx %7.1f %7.1f %9.5f %5zu %9.1f %9.0f %9.0f%s\n", name.c_str(),
                   way.c_str(), f.time_s, f.ideal_s, f.time_s / f.ideal_s, f.v_median, f.v_p5, f.max_deviation,
                   f.violations, f.us_per_block, f.cycle_p99_us, f.cycle_max_us, f.finished ? "" : "  (cut at --max-time)");
       std::fflush(stdout);
     }
-    const auto ref = reference.find(name);
+    const auto ref = reference.find(std::filesystem::path(name).stem().string());  // as bench.py names it
     if (ref == reference.end()) continue;
     for (const ReferenceRow& row : ref->second)
-      std::printf("%-22s %-9s %8.2f %8.2f %6.2fx %7s %7s %9s %5s %9s %9s\n", name.c_str(), ("lcnc_" + row.mode).c_str(),
+      std::printf("%-26s %-9s %8.2f %8.2f %6.2fx %7s %7s %9s %5s %9s %9s\n", name.c_str(), ("lcnc_" + row.mode).c_str(),
                   row.time_s, ideal_s, row.time_s / ideal_s, row.v_med.c_str(), row.v_p5.c_str(), row.dev.c_str(), "-",
                   "-", "-");
   }

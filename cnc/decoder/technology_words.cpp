@@ -11,7 +11,10 @@ namespace hil::cnc::decoding {
 // M03 / M04 or while the spindle turns; under M05 it is only kept.
 void add_m_function(const Word& w, DecoderState& state, Block& block) {
   const int m = static_cast<int>(integer_code(w, max_m_function));
-  if (m == 30) {
+  // TF5200 "Default M functions": M02 and M30 are both the main program's
+  // end, CNC commands neither output nor synchronised (jscut and grbl
+  // posts end with M2).
+  if (m == 30 || m == 2) {
     block.program_end = true;
     return;
   }

@@ -89,6 +89,15 @@ class HscSpline {
   using Knot = ContourCurve::End;
 
   bool continues_with(const PathSegment& segment, const HscMode& mode) const;
+  // A least-squares cubic through the points around one of them: its first
+  // and second derivative there by polyline length, how far it misses the
+  // farthest of its points, and how many of its intervals it spans.
+  struct Fit {
+    std::vector<double> d1, d2;
+    double largest_miss = 0;
+    size_t intervals = 0;
+  };
+  std::optional<Fit> fit(size_t k, double half_window) const;
   // Point k of the run, with tangent and curvature of the fit around it.
   Knot knot(size_t k) const;
   // Where the span from point `from` ends, once the points it and its end

@@ -77,6 +77,7 @@ class PathSegment {
   void set_arc_limits(const Motion& motion, const MachineConfig& machine);
   void set_covered_distance(const MachineConfig& machine);
   void set_contour_limits(const MachineConfig& machine, double programmed_velocity);
+  void widen_on_a_gentle_curve(double k, double dk, double v_drive, double a_axis, double j_axis);
 
   bool arc_ = false;
   AxisValues start_, end_, unit_;  // unit_: d(axis)/ds of the linear axes

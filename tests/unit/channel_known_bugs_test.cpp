@@ -583,3 +583,15 @@ TEST_CASE("KRN-3 KRN-9 DPS-1 the piece the path runs on is planned with the piec
   // backward (hsc 40000192; 32 and 31002326 of the ctest ranges alike).
   check_seeds(fuzz::ProgramKind::hsc, {40000192, 32});
 }
+
+TEST_CASE("DPS-3 KRN-2 a program refused from where the axes stood after a reset errs when the look-ahead's decoder "
+          "reaches the line, cycles after the start: the fuzz's oracle expects it until the next start",
+          "[channel][contour][fuzz]") {
+  // AF (docs/FUZZ.md), fresh contour seed 40301643: after each of three
+  // resets the program, decoded from where the axes stood, has N390's arc
+  // off its circle (error 21758), as the oracle's own decoding says; the
+  // look-ahead fills 4 blocks a cycle, so the channel's error came ~10
+  // cycles after the start, when the oracle no longer expected it. An
+  // oracle fault, not the channel's.
+  check_seeds(fuzz::ProgramKind::contour, {40301643});
+}

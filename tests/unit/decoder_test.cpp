@@ -75,10 +75,16 @@ TEST_CASE("KRN-1 decoder: G02/G03 with I/J centre incremental to the start point
   CHECK(p.blocks[3].motion.center[0] == Approx(5));
 }
 
-TEST_CASE("KRN-1 decoder: program ends at M30; text after it is not decoded", "[decoder]") {
-  const DecodedProgram p = decode("G01 X1 F100\nM30\nthis is not NC code\n");
-  REQUIRE_FALSE(p.error);
-  CHECK(p.blocks.size() == 2);
+TEST_CASE("KRN-1 decoder: program ends at M30 or M02; text after it is not decoded", "[decoder]") {
+  for (const char* end : {"M30", "M02", "M2"}) {
+    INFO(end);
+    const DecodedProgram p = decode(std::string("G01 X1 F100\n") + end + "\nthis is not NC code\n");
+    REQUIRE_FALSE(p.error);
+    REQUIRE(p.blocks.size() == 2);
+    CHECK(p.blocks[1].program_end);
+    // A CNC command (TF5200 "Default M functions"): not output to the PLC.
+    CHECK(p.blocks[1].m_functions.empty());
+  }
 }
 
 TEST_CASE("KRN-2 decoder: an error names its line and block; the blocks before it are kept", "[decoder]") {

@@ -130,6 +130,16 @@ std::vector<PathPiece> spline_pieces(const DecodedProgram& p, const MachineConfi
   return pieces;
 }
 
+// The largest distance of the pieces (9 points each) from the polyline.
+double largest_distance(const std::vector<PathPiece>& pieces, const std::vector<std::vector<double>>& points) {
+  double largest = 0;
+  for (const PathPiece& piece : pieces)
+    for (int k = 0; k <= 8; ++k)
+      largest = std::max(largest, distance_to_polyline(piece.segment.position(piece.segment.length() * k / 8), points,
+                                                       0, points.size()));
+  return largest;
+}
+
 double norm_of_difference(const std::vector<double>& a, const std::vector<double>& b) {
   double sum = 0;
   for (size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
@@ -286,13 +296,7 @@ TEST_CASE("KRN-9 HSC keeps a bend sharper than MAX_ANGLE (default 30 degrees) as
   const DecodedProgram rounded_corner = decode_text(
       std::string(program).replace(program.find("MERGE=1]"), 8, "MERGE=1 MAX_ANGLE=100]"));
   const std::vector<PathPiece> through = spline_pieces(rounded_corner, m);
-  const std::vector<std::vector<double>> points = polyline(rounded_corner);
-  double max_deviation = 0;
-  for (const PathPiece& piece : through)
-    for (int k = 0; k <= 8; ++k)
-      max_deviation = std::max(max_deviation, distance_to_polyline(piece.segment.position(piece.segment.length() * k / 8),
-                                                                  points, 0, points.size()));
-  CHECK(max_deviation <= 0.01);
+  CHECK(largest_distance(through, polyline(rounded_corner)) <= 0.01);
 }
 
 TEST_CASE("KRN-9 KRN-3 issue 36: CAM chord circles of 4 and 3 decimals with #HSC ON [BSPLINE MERGE=1] run within "
@@ -446,5 +450,80 @@ TEST_CASE("KRN-9 KRN-6 a block HSC separates runs with its programmed transition
     CHECK(with_hsc.lowest_velocity > 0.5 * contoured.lowest_velocity);
     CHECK(with_hsc.cycles <= contoured.cycles * 1.02);
     CHECK(with_hsc.violations == 0);
+  }
+}
+
+TEST_CASE("KRN-9 issue 36: a letter's tip in real CAM output (4 decimals, chords of 0.03 to 0.26 mm turning up to 9 "
+          "degrees and back) is one spline: no block separated, within PATH_DEV, passed without a stop",
+          "[hsc]") {
+  // tests/programs/public/jscut_jsdc.nc (jscut, cncjs/cncjs, MIT), its
+  // lines 818..862. A cubic fitted over 2 mm on either side of a knot cannot
+  // follow a turn of 0.3 mm: every span here left PATH_DEV, and the blocks,
+  // separated, stopped at each corner (the program took 40.2 s against
+  // LinuxCNC's 36.1; 38.3 s since the fit's window narrows there). G92
+  // puts its start where the channel stands.
+  const char* tip[] = {
+      "X48.0123 Y-33.4744", "X48.2605 Y-33.5222", "X48.5097 Y-33.5730", "X48.7601 Y-33.6268", "X48.8859 Y-33.6550",
+      "X49.0116 Y-33.6840", "X49.1378 Y-33.7137", "X49.2641 Y-33.7442", "X49.3906 Y-33.7754", "X49.5173 Y-33.8074",
+      "X49.7713 Y-33.8739", "X50.0258 Y-33.9435", "X50.1533 Y-33.9796", "X50.2811 Y-34.0164", "X50.4088 Y-34.0540",
+      "X50.5366 Y-34.0924", "X50.5882 Y-34.1086", "X50.6367 Y-34.1221", "X50.6829 Y-34.1323", "X50.7261 Y-34.1389",
+      "X50.7670 Y-34.1419", "X50.8053 Y-34.1409", "X50.8411 Y-34.1358", "X50.8747 Y-34.1259", "X50.9059 Y-34.1114",
+      "X50.9351 Y-34.0919", "X50.9621 Y-34.0667", "X50.9869 Y-34.0363", "X51.0101 Y-33.9997", "X51.0311 Y-33.9573",
+      "X51.0504 Y-33.9082", "X51.0682 Y-33.8526", "X51.0840 Y-33.7899", "X51.0984 Y-33.7200", "X51.1114 Y-33.6428",
+      "X51.1228 Y-33.5577", "X51.1327 Y-33.4648", "X51.1416 Y-33.3634", "X51.1493 Y-33.2534", "X51.1556 Y-33.1346",
+      "X51.1612 Y-33.0068", "X51.1655 Y-32.8696", "X51.1693 Y-32.7228", "X51.1719 Y-32.5661", "X51.1739 Y-32.3992"};
+  std::string blocks;
+  for (const char* point : tip) blocks += std::string("G01 ") + point + (blocks.empty() ? " F1016\n" : "\n");
+  const std::string program =
+      "N1 G90\nG92 X-47.7631 Y33.4279\n#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n" + blocks + "M30\n";
+  const MachineConfig m = test::xyz_machine();
+  const DecodedProgram p = decode_text(program);
+  REQUIRE_FALSE(p.error);
+  const std::vector<PathPiece> pieces = spline_pieces(p, m);
+  const auto separated =
+      std::count_if(pieces.begin(), pieces.end(), [](const PathPiece& piece) { return !piece.segment.joint(); });
+  CHECK(separated == 0);
+  CHECK(largest_distance(pieces, polyline(p)) <= 0.01);
+  // Between reaching 10 mm/s and braking below it for the program end.
+  Channel channel(m, program);
+  logger::LimitChecker checker(m);
+  std::vector<double> velocity;
+  test::run_program(channel, &checker, [&](int64_t, const HliState&, HliControl&) {
+    velocity.push_back(std::hypot(channel.setpoints()[0].velocity, channel.setpoints()[1].velocity));
+  });
+  const auto fast = [](double v) { return v > 10; };
+  const auto first = std::find_if(velocity.begin(), velocity.end(), fast);
+  const auto last = std::find_if(velocity.rbegin(), velocity.rend(), fast).base();
+  REQUIRE(first < last);
+  const double lowest = *std::min_element(first, last);
+  INFO(velocity.size() << " cycles, lowest " << lowest << " mm/s");
+  CHECK(lowest > 2);
+  CHECK(checker.finish().violations.empty());
+}
+
+TEST_CASE("KRN-9 KRN-3 issue 36: on a gentle curve (its curvature terms at the feed within a third of the axes' "
+          "limits) the path brakes and accelerates with 2/3 of their acceleration and jerk, else with the shares",
+          "[hsc]") {
+  const MachineConfig m = test::xyz_machine();  // X, Y: a 2000 mm/s^2, j 40,000 mm/s^3
+  const auto limits_at = [&](const std::string& feed) {
+    std::string program = chord_circle(200, 4, "#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n");
+    program.replace(program.find("F6000"), 5, feed);
+    std::vector<Limits> limits;
+    for (const PathPiece& piece : spline_pieces(decode_text(program), m))
+      if (piece.segment.joint()) limits.push_back(piece.segment.limits());
+    return limits;
+  };
+  // F600, R 15.9: k v^2 = 6.3 mm/s^2 and 3 k v a_t = 2,500 mm/s^3, far inside a third.
+  const std::vector<Limits> slow = limits_at("F600");
+  REQUIRE(slow.size() > 100);
+  for (const Limits& lim : slow) {
+    CHECK(lim.j == Approx(2 * 40000.0 / 3));
+    CHECK(lim.a <= 2 * 2000.0 / 3);
+    CHECK(lim.a >= 2 * 2000.0 / 3 * std::exp2(-1.0 / 16));
+  }
+  // F6000: 3 k v a_t at 2/3 of a would be 25,000 mm/s^3: the shares (a/2, j/3).
+  for (const Limits& lim : limits_at("F6000")) {
+    CHECK(lim.j == Approx(40000.0 / 3));
+    CHECK(lim.a <= 1000.0);
   }
 }

@@ -35,6 +35,22 @@ std::string read(const fs::path& file) {
   text << in.rdbuf();
   return text.str();
 }
+
+// A light router of the kind jscut's programs are written for: every axis
+// slower than config/xyz_machine.yaml's, each by other factors, so that the
+// path's limits come from another axis in each direction.
+MachineConfig light_router() {
+  MachineConfig m = test::xyz_machine();
+  m.name = "light router";
+  const double v[] = {0.5, 0.8, 1}, a[] = {0.25, 0.5, 1}, j[] = {0.2, 0.5, 2};
+  for (size_t i = 0; i < 3; ++i) {
+    m.axes[i].v_max *= v[i];
+    m.axes[i].v_rapid *= v[i];
+    m.axes[i].a_max *= a[i];
+    m.axes[i].j_max *= j[i];
+  }
+  return m;
+}
 }  // namespace
 
 TEST_CASE("KRN-8 corpus: every program of tests/programs decodes unchanged to its M30", "[dialect][corpus]") {
@@ -50,6 +66,37 @@ TEST_CASE("KRN-8 corpus: every program of tests/programs decodes unchanged to it
   }
 }
 
+namespace {
+// `program` through the channel to its end (at most `max_cycles`), the PLC
+// acknowledging every technology function at once: every error event and
+// every limit violation fails the test.
+void run_within_limits(const MachineConfig& machine, const std::string& program, uint32_t skip_levels,
+                       int64_t max_cycles) {
+  Channel channel(machine, program);
+  logger::LimitChecker checker(machine);
+  HliControl c = test::start_command(true);
+  c.program_block_ignore = {skip_levels, true};
+  for (int64_t k = 0; k < max_cycles && !channel.finished(); ++k) {
+    channel.step(k, c);
+    checker.add_hli_state(channel.hli());
+    for (size_t i = 0; i < channel.setpoints().size(); ++i)
+      checker.add_setpoint(static_cast<int>(i), k, channel.setpoints()[i].position);
+    c.program_start.command_w = false;
+    const HliState& s = channel.hli();
+    c.m_function_ack = {s.m_function_request_r && !c.m_function_ack.command_w, true};
+    c.h_function_ack = {s.h_function_request_r && !c.h_function_ack.command_w, true};
+    c.s_function_ack = {s.s_function_request_r && !c.s_function_ack.command_w, true};
+    c.t_function_ack = {s.t_function_request_r && !c.t_function_ack.command_w, true};
+    c.continue_motion = {s.stop_conditions_r != 0 && !c.continue_motion.command_w, true};  // M00 / M01
+    for (const Event& e : channel.take_events())
+      if (e.severity == Severity::error) FAIL_CHECK(describe(e));
+  }
+  CHECK(channel.hli().channel_state == ChannelState::program_end);
+  const logger::CheckReport report = checker.finish();
+  for (const auto& v : report.violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
+}
+}  // namespace
+
 TEST_CASE("KRN-8 KRN-3 corpus: every program runs through the channel within the axes' limits, "
           "with and without its skip levels",
           "[dialect][corpus]") {
@@ -57,30 +104,31 @@ TEST_CASE("KRN-8 KRN-3 corpus: every program runs through the channel within the
   for (const fs::path& file : corpus()) {
     for (const uint32_t skip_levels : {0u, 0x3FFu}) {
       INFO(file.filename().string() << ", program_block_ignore " << skip_levels);
-      Channel channel(machine, read(file));
-      logger::LimitChecker checker(machine);
-      HliControl c = test::start_command(true);
-      c.program_block_ignore = {skip_levels, true};
-      int64_t k = 0;
-      for (; k < 200000 && !channel.finished(); ++k) {
-        channel.step(k, c);
-        checker.add_hli_state(channel.hli());
-        for (size_t i = 0; i < channel.setpoints().size(); ++i)
-          checker.add_setpoint(static_cast<int>(i), k, channel.setpoints()[i].position);
-        c.program_start.command_w = false;
-        const HliState& s = channel.hli();
-        // The PLC acknowledges every technology function at once.
-        c.m_function_ack = {s.m_function_request_r && !c.m_function_ack.command_w, true};
-        c.h_function_ack = {s.h_function_request_r && !c.h_function_ack.command_w, true};
-        c.s_function_ack = {s.s_function_request_r && !c.s_function_ack.command_w, true};
-        c.t_function_ack = {s.t_function_request_r && !c.t_function_ack.command_w, true};
-        c.continue_motion = {s.stop_conditions_r != 0 && !c.continue_motion.command_w, true};  // M00 / M01
-        for (const Event& e : channel.take_events())
-          if (e.severity == Severity::error) FAIL_CHECK(describe(e));
-      }
-      CHECK(channel.hli().channel_state == ChannelState::program_end);
-      const logger::CheckReport report = checker.finish();
-      for (const auto& v : report.violations) FAIL_CHECK(v.axis << " " << v.quantity << " " << v.value);
+      run_within_limits(machine, read(file), skip_levels, 200000);
     }
+  }
+}
+
+// Real CAM output from public repositories (tests/programs/public/README.md),
+// changed only where the dialect lacks a word: as written, contoured (G261)
+// and smoothed (#HSC), on config/xyz_machine.yaml and a lighter machine.
+TEST_CASE("KRN-8 KRN-3 KRN-6 KRN-9 public corpus: real CAM programs decode and run within the axes' limits, "
+          "as written, with G261 and with #HSC",
+          "[dialect][corpus]") {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(HIL_SOURCE_DIR) / "tests" / "programs" / "public"))
+    if (entry.path().extension() == ".nc") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  CHECK(files.size() >= 2);
+  const std::string ways[] = {"", "#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n", "#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n"};
+  for (const fs::path& file : files) {
+    const std::string program = read(file);
+    const DecodedProgram decoded = decode_program(program, test::xyz_machine(), {0, 0, 0});
+    if (decoded.error) FAIL_CHECK(file.filename().string() << ": " << describe(*decoded.error));
+    for (const MachineConfig& machine : {test::xyz_machine(), light_router()})
+      for (const std::string& way : ways) {
+        INFO(file.filename().string() << " on " << machine.name << " with '" << way << "'");
+        run_within_limits(machine, way + program, 0, 1000000);
+      }
   }
 }
