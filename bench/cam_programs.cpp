@@ -12,8 +12,9 @@
 // cycles whose interpolator block is a G01/G02/G03, the largest distance of
 // the commanded X Y Z from the programmed path, the offline limit check's
 // violations, the channel's wall time per motion block (decode, plan,
-// interpolate) and its 99th percentile cycle. Asserts nothing.
-// Run: build/bin/cam_programs [--programs a,b] [--circles 9,4,3] [--ways written,g261,hsc]
+// interpolate) and its 99th percentile cycle; with --losses N, the N NC
+// lines whose time exceeds their share of the ideal most. Asserts nothing.
+// Run: build/bin/cam_programs [--programs a,b] [--circles 9,4,3] [--ways written,g261,hsc] [--losses N]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -46,6 +47,7 @@ struct Figures {
   double us_per_block = 0, cycle_p99_us = 0, cycle_max_us = 0;
   size_t violations = 0;
   bool finished = false;
+  std::map<int64_t, int64_t> cycles_at_line;  // NC line -> cycles from the first to the last cycle of motion
 };
 
 // The programmed path: the motion blocks of a program as decoded.
@@ -55,6 +57,7 @@ struct ProgrammedPath {
   std::map<int64_t, bool> feed_line;  // NC line -> its motion is G01/G02/G03
   std::vector<int> main_axes;         // X Y Z
   double ideal_s = 0;
+  std::map<int64_t, double> ideal_at_line;  // NC line -> its part of ideal_s
 };
 
 ProgrammedPath programmed_path(const std::string& program, const MachineConfig& machine,
@@ -68,7 +71,9 @@ ProgrammedPath programmed_path(const std::string& program, const MachineConfig& 
     if (!block.has_motion) continue;
     PathSegment segment(block.motion, machine);
     if (segment.length() <= 0) continue;
-    path.ideal_s += segment.length() / std::min(segment.programmed_velocity(), segment.limits().v);
+    const double ideal = segment.length() / std::min(segment.programmed_velocity(), segment.limits().v);
+    path.ideal_s += ideal;
+    path.ideal_at_line[block.nc_line] += ideal;
     path.feed_line[block.nc_line] = block.motion.type != MotionType::rapid;
     path.segments.push_back(std::move(segment));
     path.line.push_back(block.nc_line);
@@ -100,6 +105,7 @@ Figures run(const MachineConfig& machine, const std::string& program, const Prog
   int64_t first_moving = -1, last_moving = -1;
   size_t segment = 0;
   std::vector<double> cycle_us, cutting_velocity, previous;
+  std::vector<int64_t> line_of_cycle;  // from the first cycle of motion
   std::vector<double> point(machine.axes.size());
   for (int64_t k = 0; k < max_cycles; ++k) {
     const auto before = std::chrono::steady_clock::now();
@@ -142,6 +148,7 @@ Figures run(const MachineConfig& machine, const std::string& program, const Prog
       if (!path.segments.empty()) f.max_deviation = std::max(f.max_deviation, best);
       previous = point;
     }
+    if (first_moving >= 0) line_of_cycle.push_back(channel.hli().block_count_r);
     const auto line = path.feed_line.find(channel.hli().block_count_r);
     if (first_moving >= 0 && line != path.feed_line.end() && line->second) cutting_velocity.push_back(v);
     if (channel.finished()) {
@@ -150,6 +157,8 @@ Figures run(const MachineConfig& machine, const std::string& program, const Prog
     }
   }
   f.time_s = first_moving < 0 ? 0 : (last_moving - first_moving + 1) * machine.cycle_time_s();
+  for (int64_t k = 0; first_moving >= 0 && k <= last_moving - first_moving; ++k)
+    ++f.cycles_at_line[line_of_cycle[static_cast<size_t>(k)]];
   double wall_us = 0;
   for (double us : cycle_us) wall_us += us;
   f.us_per_block = wall_us / static_cast<double>(std::max<size_t>(1, path.segments.size()));
@@ -214,6 +223,28 @@ std::map<std::string, std::vector<ReferenceRow>> linuxcnc_rows(const std::vector
   return rows;
 }
 
+// The `count` NC lines of `program` whose time in the run exceeds their
+// share of the ideal most, and what all lines together lose.
+void print_losses(const Figures& f, const ProgrammedPath& path, const std::string& program, double cycle_s,
+                  size_t count) {
+  std::map<int64_t, double> lost;
+  for (const auto& [line, ideal] : path.ideal_at_line) lost[line] = -ideal;
+  for (const auto& [line, cycles] : f.cycles_at_line) lost[line] += static_cast<double>(cycles) * cycle_s;
+  std::vector<std::pair<double, int64_t>> worst;
+  for (const auto& [line, seconds] : lost) worst.emplace_back(seconds, line);
+  std::sort(worst.rbegin(), worst.rend());
+  std::vector<std::string> lines;
+  std::stringstream in(program);
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  for (size_t i = 0; i < worst.size() && i < count; ++i) {
+    const auto [seconds, line] = worst[i];
+    const auto ideal = path.ideal_at_line.find(line);
+    const std::string text = line >= 1 && static_cast<size_t>(line) <= lines.size() ? lines[static_cast<size_t>(line) - 1] : "";
+    std::printf("    line %-6lld %+8.3f s (ideal %.3f s)  %.60s\n", static_cast<long long>(line), seconds,
+                ideal == path.ideal_at_line.end() ? 0.0 : ideal->second, text.c_str());
+  }
+}
+
 std::vector<std::string> split(const std::string& list) {
   std::vector<std::string> items;
   std::stringstream in(list);
@@ -247,6 +278,11 @@ int main(int argc, char** argv) {
                "also run the programs on LinuxCNC's simulator (bench/linuxcnc/run.sh; Debian's linuxcnc-uspace, a "
                "reference only) and print its G61 and G64 figures beside ours");
   app.add_option("--max-time", max_time_s, "program time at which a run is cut, s")->capture_default_str();
+  size_t losses = 0;
+  app.add_option("--losses", losses,
+                 "after each run, the N NC lines whose time exceeds their share of the ideal most (where a program "
+                 "loses its time: corners, stops, slow curves)")
+      ->capture_default_str();
   app.footer("Documentation: docs/HSC.md and docs/PERFORMANCE.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
   const MachineConfig machine = parse_machine_config(YAML::LoadFile(machine_file));
@@ -309,6 +345,7 @@ int main(int argc, char** argv) {
       std::printf("%-26s %-9s %8.2f %8.2f %6.2fx %7.1f %7.1f %9.5f %5zu %9.1f %9.0f %9.0f%s\n", name.c_str(),
                   way.c_str(), f.time_s, f.ideal_s, f.time_s / f.ideal_s, f.v_median, f.v_p5, f.max_deviation,
                   f.violations, f.us_per_block, f.cycle_p99_us, f.cycle_max_us, f.finished ? "" : "  (cut at --max-time)");
+      if (losses > 0) print_losses(f, programmed_path(text, machine, start), text, machine.cycle_time_s(), losses);
       std::fflush(stdout);
     }
     const auto ref = reference.find(std::filesystem::path(name).stem().string());  // as bench.py names it
