@@ -132,6 +132,12 @@ FuzzRun prepare_channel_fuzz(uint64_t seed, const FuzzOptions& options) {
       p.contoured = p.contoured || switches_contouring_on(p.lines[i]);
       p.hsc = p.hsc || switches_hsc_on(p.lines[i]);
     }
+    // Its own M functions, not the generated program's (a corpus program's
+    // M06, M03, M07 were taken for M functions the program does not have).
+    p.m_functions.clear();
+    for (const cnc::Block& b : cnc::decode_program(p.text, machine, std::vector<double>(machine.axes.size(), 0.0)).blocks)
+      for (const cnc::MFunction& f : b.m_functions)
+        if (f.address == 'M') p.m_functions.push_back(f.nr);
   }
   const GeneratedProgram& program = run.program;
 

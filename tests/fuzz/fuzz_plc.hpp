@@ -257,6 +257,19 @@ class FuzzPlc {
     }
     if (!ack.command_w && ack_at_ < 0 && s.m_function_request_r)
       ack_at_ = k + 1 + (chaos ? rng_.integer(0, ack_delay_max_) : rng_.integer(0, 5));
+    // T, S and H functions come only from a program given to the fuzz
+    // (`--program`, a corpus program's T6 M06 / S14000): acknowledged the
+    // cycle after their request, drawing nothing from the seed's stream, so
+    // that generated programs run as before. Unacknowledged, such a program
+    // waited for them until its cycle bound.
+    acknowledge_at_once(s.t_function_request_r, c.t_function_ack);
+    acknowledge_at_once(s.s_function_request_r, c.s_function_ack);
+    acknowledge_at_once(s.h_function_request_r, c.h_function_ack);
+  }
+
+  static void acknowledge_at_once(bool request, ControlUnitBool& ack) {
+    if (ack.command_w) ack.command_w = false;
+    else if (request) ack = {true, true};
   }
 
   int64_t gap(double mean) { return 1 + static_cast<int64_t>(rng_.uniform(0, 2 * mean)); }
