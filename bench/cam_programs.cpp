@@ -341,11 +341,12 @@ int main(int argc, char** argv) {
         return 2;
       }
       // Decoded as run: the added lines shift the NC lines the interpolator shows.
-      const Figures f = run(machine, text, programmed_path(text, machine, start), max_cycles);
+      const ProgrammedPath path = programmed_path(text, machine, start);
+      const Figures f = run(machine, text, path, max_cycles);
       std::printf("%-26s %-9s %8.2f %8.2f %6.2fx %7.1f %7.1f %9.5f %5zu %9.1f %9.0f %9.0f%s\n", name.c_str(),
                   way.c_str(), f.time_s, f.ideal_s, f.time_s / f.ideal_s, f.v_median, f.v_p5, f.max_deviation,
                   f.violations, f.us_per_block, f.cycle_p99_us, f.cycle_max_us, f.finished ? "" : "  (cut at --max-time)");
-      if (losses > 0) print_losses(f, programmed_path(text, machine, start), text, machine.cycle_time_s(), losses);
+      if (losses > 0) print_losses(f, path, text, machine.cycle_time_s(), losses);
       std::fflush(stdout);
     }
     const auto ref = reference.find(std::filesystem::path(name).stem().string());  // as bench.py names it

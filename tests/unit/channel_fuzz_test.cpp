@@ -3,12 +3,11 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "channel_fuzz.hpp"
 #include "decoder.hpp"
+#include "test_machine.hpp"
 
 using namespace hil;
 using namespace hil::fuzz;
@@ -191,15 +190,10 @@ TEST_CASE("KRN-8 KRN-3 KRN-5 DPS-3 channel fuzz, a program of its own: the corpu
   // cycle after their request, and the M functions a program may output
   // are its own (a corpus program's T6 M06 waited for its acknowledgement
   // until the cycle bound; its M06 was taken for one it does not have).
-  const auto read = [](const std::string& file) {
-    std::ifstream in(std::string(HIL_SOURCE_DIR) + "/" + file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  };
   FuzzOptions options;
   options.program_text = "G90 G71\nT6 M06\nD6\nS14000 M03\nM07\nG01 X10 Y5 F3000\nX20 Y0\nH20\nX0\nM05\nM30\n";
   CHECK(run_seeds(1, 40, options, "program with T, S, H and M").failed == 0);
-  options.program_text = "#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n" + read("tests/programs/public/jscut_tball.nc");
+  options.program_text =
+      "#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n" + test::source_text("tests/programs/public/jscut_tball.nc");
   CHECK(run_seeds(1, 4, options, "jscut_tball with #HSC").failed == 0);
 }

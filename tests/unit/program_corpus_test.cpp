@@ -7,8 +7,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "channel.hpp"
 #include "channel_runner.hpp"
@@ -21,19 +19,17 @@ using namespace hil::cnc;
 namespace fs = std::filesystem;
 
 namespace {
-std::vector<fs::path> corpus() {
+// The .nc programs of a folder of the source tree, by name.
+std::vector<fs::path> corpus(const std::string& folder = "tests/programs") {
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(fs::path(HIL_SOURCE_DIR) / "tests" / "programs"))
+  for (const auto& entry : fs::directory_iterator(fs::path(HIL_SOURCE_DIR) / folder))
     if (entry.path().extension() == ".nc") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
 }
 
 std::string read(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return test::source_text(fs::relative(file, HIL_SOURCE_DIR).string());
 }
 
 // A light router of the kind jscut's programs are written for: every axis
@@ -115,10 +111,7 @@ TEST_CASE("KRN-8 KRN-3 corpus: every program runs through the channel within the
 TEST_CASE("KRN-8 KRN-3 KRN-6 KRN-9 public corpus: real CAM programs decode and run within the axes' limits, "
           "as written, with G261 and with #HSC",
           "[dialect][corpus]") {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(fs::path(HIL_SOURCE_DIR) / "tests" / "programs" / "public"))
-    if (entry.path().extension() == ".nc") files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
+  const std::vector<fs::path> files = corpus("tests/programs/public");
   CHECK(files.size() >= 2);
   const std::string ways[] = {"", "#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n", "#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n"};
   for (const fs::path& file : files) {

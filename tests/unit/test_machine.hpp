@@ -2,9 +2,21 @@
 // The machine the unit tests run on: the shipped config/xyz_machine.yaml.
 #include <yaml-cpp/yaml.h>
 
+#include <fstream>
+#include <sstream>
+#include <string>
+
 #include "machine_config.hpp"
 
 namespace hil::test {
+
+// The text of a file of the source tree, by its path from the tree's root.
+inline std::string source_text(const std::string& relative) {
+  std::ifstream in(std::string(HIL_SOURCE_DIR) + "/" + relative);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 inline MachineConfig xyz_machine() {
   return parse_machine_config(YAML::LoadFile(std::string(HIL_SOURCE_DIR) + "/config/xyz_machine.yaml"));
