@@ -94,7 +94,7 @@ class Planner {
 
   // Along a path, arriving with v_end a little beyond the end beats
   // arriving too fast: a stretch's v_end is the highest velocity from which
-  // the next one can still be kept, to the last double (highest_entry_velocity),
+  // the next one can still be kept, to within 1e-12 (highest_entry_velocity),
   // and a state sampled from a plan over a long stretch carries that plan's
   // rounding (1e-13 mm over 500 mm). Treating such a miss as "v_end cannot
   // be reached" arrived a rounding faster, which the next short block could

@@ -103,24 +103,33 @@ std::vector<double> ContourCurve::position(double s) const {
 
 void ContourCurve::frame(double u, Frame& f) const {
   const size_t n = coefficients_.size();
-  for (std::vector<double>* v : {&f.t, &f.k, &f.dk, &f.r, &f.q, &f.w, &f.normal}) v->resize(n);
+  if (f.t.size() != n)
+    for (std::vector<double>* v : {&f.t, &f.k, &f.dk, &f.r, &f.q, &f.w, &f.normal}) v->resize(n);
   std::vector<double>&r = f.r, &q = f.q, &w = f.w, &normal = f.normal;
+  double rr = 0;
   for (size_t i = 0; i < n; ++i) {  // d^1..3 P / du^1..3, by Horner
     const std::array<double, 6>& c = coefficients_[i];
     r[i] = (((5 * c[5] * u + 4 * c[4]) * u + 3 * c[3]) * u + 2 * c[2]) * u + c[1];
     q[i] = ((20 * c[5] * u + 12 * c[4]) * u + 6 * c[3]) * u + 2 * c[2];
     w[i] = (60 * c[5] * u + 24 * c[4]) * u + 6 * c[3];
+    rr += r[i] * r[i];
   }
-  const double sigma = std::sqrt(dot(r, r));
-  for (size_t i = 0; i < n; ++i) f.t[i] = r[i] / sigma;
-  const double a = dot(q, f.t);
-  for (size_t i = 0; i < n; ++i) normal[i] = q[i] - a * f.t[i];
-  for (size_t i = 0; i < n; ++i) f.k[i] = normal[i] / (sigma * sigma);
-  // d/du of (q - a t) / sigma², then / sigma for d/ds.
-  const double da = dot(w, f.t) + (dot(q, q) - a * a) / sigma;
+  // One division per frame (bounds() takes hundreds of frames per curve).
+  const double sigma = std::sqrt(rr), inv = 1 / sigma, inv2 = inv * inv;
+  double a = 0, qq = 0, wt = 0;
   for (size_t i = 0; i < n; ++i) {
-    const double dnormal = w[i] - da * f.t[i] - a * normal[i] / sigma;
-    f.dk[i] = (dnormal / (sigma * sigma) - 2 * normal[i] * a / (sigma * sigma * sigma)) / sigma;
+    f.t[i] = r[i] * inv;
+    a += q[i] * f.t[i];
+    qq += q[i] * q[i];
+    wt += w[i] * f.t[i];
+  }
+  // d/du of (q - a t) / sigma², then / sigma for d/ds.
+  const double da = wt + (qq - a * a) * inv;
+  for (size_t i = 0; i < n; ++i) {
+    normal[i] = q[i] - a * f.t[i];
+    f.k[i] = normal[i] * inv2;
+    const double dnormal = w[i] - da * f.t[i] - a * normal[i] * inv;
+    f.dk[i] = (dnormal - 2 * normal[i] * a * inv) * inv2 * inv;
   }
 }
 

@@ -32,14 +32,28 @@ double trapez_entry_estimate(double v_exit, double distance, const Limits& lim, 
     const double b = a / (2 * j) + r, c = v_exit * v_exit / (2 * a) - v_exit * a / (2 * j) + distance;
     return 2 * c / (b + std::sqrt(b * b + 2 * c / a));
   }
-  // j s^3 + r j s^2 + 2 v_exit s + r v_exit - distance = 0, 0 <= s < a / j
+  // j s^3 + r j s^2 + 2 v_exit s + r v_exit - distance = 0, 0 <= s < a / j.
+  // g is increasing and convex for s >= 0: Newton from any s above the root
+  // descends onto it. Without its cubic and square terms, or without its
+  // linear and square terms, g is smaller, so their roots lie above its
+  // own: start from the least of them (from a / j, the braking ramps of a
+  // look-ahead, dv ~ 1e-3 a^2 / j, took 8.4 steps on average, from these
+  // 3.7). Where a step no longer moves s beyond round-off, s is the root.
   auto g = [&](double s) { return ((j * s + r * j) * s + 2 * v_exit) * s + r * v_exit - distance; };
+  const double rest = distance - r * v_exit;
   double s = a / j;
+  if (rest > 0) {
+    if (v_exit > 0) s = std::min(s, rest / (2 * v_exit));
+    // (cbrt is dear: only where the linear bound is far off, dv >~ v_exit)
+    if (j * s * s > v_exit) s = std::min(s, std::cbrt(rest / j));
+  }
   for (int i = 0; i < 40; ++i) {
     const double slope = (3 * j * s + 2 * r * j) * s + 2 * v_exit;
     const double next = s - g(s) / slope;
     if (!(next < s) || !(next >= 0)) break;
+    const bool converged = s - next <= 1e-15 * s;
     s = next;
+    if (converged) break;
   }
   return v_exit + j * s * s;
 }
@@ -63,6 +77,13 @@ double highest_entry_velocity(double v_exit, double distance, double v_cap, cons
   }
   // v_exit fits, v_cap does not; the distance grows with v0, smoothly.
   double good = v_exit, bad = v_cap, at_good = v_exit * reaction_s, at_bad = at_cap;
+  // A hair below the estimate (far beyond its round-off) fits: one braking
+  // instead of stepping to the last double that does (the look-ahead's
+  // backward pass re-walks a braking ramp of ~85 pieces at every block on
+  // a G261 chord polyline, issue 36 item 3; a lower v_end is only more
+  // conservative for the plans that aim at it).
+  const double below = estimate * (1 - entry_velocity_margin);
+  if (below > good && below < bad && covers(below) <= distance) return below;
   if (estimate > good && estimate < bad) {
     // From the estimate the last double that fits is a few away: step to
     // it, and bracket it for the search where it is not.
@@ -90,14 +111,25 @@ LookAhead::LookAhead(const MachineConfig& machine, size_t capacity)
     : machine_(machine), builder_(machine), hsc_(machine), capacity_(capacity) {}
 
 void LookAhead::push(const MotionPiece& piece, bool stop_before) {
+  const size_t before = blocks_.size();
   PathSegment segment = piece.segment(machine_);
   if (HscSpline::smooths(piece, segment)) {
     take(hsc_.add(piece, std::move(segment), stop_before));
-    return;
+  } else {
+    flush_spline();
+    stop_before = stop_before || hsc_.take_exact_stop();
+    add_to_builder(piece, std::move(segment), stop_before);
   }
-  flush_spline();
-  stop_before = stop_before || hsc_.take_exact_stop();
-  add_to_builder(piece, std::move(segment), stop_before);
+  plan_pushed(before);
+}
+
+// Once for all the pieces a block brought (a contoured block's curve halves
+// and middle, a spline's span): the backward pass walks the braking ramp
+// behind them, some 85 pieces on a G261 chord polyline, and walked it for
+// each piece (issue 36 item 3). It ends, as it did after the last of them,
+// at the first limiting transition before them that keeps its v_end.
+void LookAhead::plan_pushed(size_t before) {
+  if (blocks_.size() > before) backward_pass(blocks_.size() - 1, before);
 }
 
 void LookAhead::add_to_builder(const MotionPiece& piece, PathSegment&& segment, bool stop_before) {
@@ -144,8 +176,10 @@ void LookAhead::push_spline_piece(PathPiece&& piece) {
 void LookAhead::flush_spline() { take(hsc_.flush()); }
 
 void LookAhead::flush() {
+  const size_t before = blocks_.size();
   flush_spline();
   for (PathPiece& piece : builder_.flush()) push_piece(std::move(piece));
+  plan_pushed(before);
 }
 
 void LookAhead::pop_front() {
@@ -179,13 +213,12 @@ void LookAhead::push_piece(PathPiece&& piece) {
     blocks_.back().curvature_step = step;
   }
   blocks_.emplace_back(std::move(piece), jerk_share);
-  backward_pass(blocks_.size() - 1, true);
 }
 
 void LookAhead::set_velocity_factor(double factor) {
   if (factor == factor_) return;
   factor_ = factor;
-  if (!blocks_.empty()) backward_pass(blocks_.size() - 1, false);
+  if (!blocks_.empty()) backward_pass(blocks_.size() - 1, 0);  // all of it: every cruise velocity moved
 }
 
 Limits LookAhead::cruise_limits(size_t i) const {
@@ -257,7 +290,7 @@ double LookAhead::entry_velocity_after(size_t i) const {
                                 machine_.cycle_time_s());
 }
 
-void LookAhead::backward_pass(size_t last, bool until_unchanged) {
+void LookAhead::backward_pass(size_t last, size_t settled_before) {
   blocks_[last].v_end = 0;  // nothing known beyond it: it must be able to stop
   blocks_[last].limiting = true;
   double v_next = 0, distance = 0;  // of the next limiting transition
@@ -297,7 +330,7 @@ void LookAhead::backward_pass(size_t last, bool until_unchanged) {
       continue;
     }
     const double v = highest_entry_velocity(v_next, distance, cap, lim, next.slope, machine_.cycle_time_s());
-    if (until_unchanged && v == b.v_end) break;
+    if (i < settled_before && v == b.v_end) break;
     b.v_end = v_next = v;
     distance = 0;
     lim.a = lim.j = std::numeric_limits<double>::infinity();

@@ -93,9 +93,11 @@ class LookAhead {
  private:
   // New v_end from block `last` down to the front, stretch by stretch: from
   // a limiting transition with a = 0 the path must reach the next one's
-  // v_end within the stretch between. With `until_unchanged` it stops at
-  // the first limiting transition that keeps its v_end.
-  void backward_pass(size_t last, bool until_unchanged);
+  // v_end within the stretch between. It stops at the first limiting
+  // transition before `settled_before` that keeps its v_end.
+  void backward_pass(size_t last, size_t settled_before);
+  // After pieces were pushed from index `before` on.
+  void plan_pushed(size_t before);
   // The highest velocity at the end of the non-limiting block i from which
   // the path still reaches the next limiting transition's v_end.
   double entry_velocity_after(size_t i) const;
@@ -115,9 +117,13 @@ class LookAhead {
   RingQueue<LookAheadPiece> blocks_;
 };
 
-// The highest velocity v0 <= v_cap from which a velocity change (a = 0 at
-// both ends) reaches v_exit within `distance`, after going on at v0 for up
-// to `reaction_s` first: the channel samples the path at its cycle time, and
+// Relative: how far below the last double that fits highest_entry_velocity
+// may answer (TRAPEZ: its closed form less this, checked by one braking).
+constexpr double entry_velocity_margin = 1e-12;
+
+// The highest velocity v0 <= v_cap (to entry_velocity_margin) from which a
+// velocity change (a = 0 at both ends) reaches v_exit within `distance`,
+// after going on at v0 for up to `reaction_s` first: the channel samples the path at its cycle time, and
 // a plan that ends on a transition between two cycles is followed by the
 // next one only from the next cycle (replanned there, the path has moved on
 // at v0 for up to one cycle; without that margin v0 was the exact limit, and
