@@ -123,11 +123,12 @@ constexpr double entry_velocity_margin = 1e-12;
 
 // The highest velocity v0 <= v_cap (to entry_velocity_margin) from which a
 // velocity change (a = 0 at both ends) reaches v_exit within `distance`,
-// after going on at v0 for up to `reaction_s` first: the channel samples the path at its cycle time, and
-// a plan that ends on a transition between two cycles is followed by the
-// next one only from the next cycle (replanned there, the path has moved on
-// at v0 for up to one cycle; without that margin v0 was the exact limit, and
-// any such delay, or rounding, left the next block too short to keep v_exit).
+// after going on at v0 for up to `reaction_s` first: the channel samples
+// the path at its cycle time, and a plan that ends on a transition between
+// two cycles is followed by the next one only from the next cycle
+// (replanned there, the path has moved on at v0 for up to one cycle;
+// without that reaction v0 was the exact limit, and any such delay, or
+// rounding, left the next block too short to keep v_exit).
 double highest_entry_velocity(double v_exit, double distance, double v_cap, const Limits& lim, SlopeType slope,
                               double reaction_s = 0);
 
