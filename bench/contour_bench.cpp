@@ -123,31 +123,31 @@ Result run(const MachineConfig& machine, const std::string& program, const std::
 // (2u^2, then 1 - 2(1-u)^2): axis i changes its velocity by v |t2_i - t1_i|
 // with peak acceleration 2 v |dt_i| / T and jerk 4 v |dt_i| / T^2, so T >=
 // the largest of 2 sqrt(v |dt_i| / j_i) and 2 v |dt_i| / a_i; the path
-// leaves the programmed corner by a distance that grows with v T. The
-// largest v whose shortest T keeps within PATH_DEV (found numerically) is
-// the bound; the lowest path velocity of that turn is |V| at its middle.
+// passes the programmed corner at a distance that grows with v T: the
+// corner deviation, which PATH_DEV bounds (TF5200 "Contouring with corner
+// deviation": the distance of the rounded contour to the programmed corner
+// point). The largest v whose shortest T keeps within PATH_DEV (found
+// numerically) is the bound; the lowest path velocity of that turn is |V|
+// at its middle.
 struct CornerBound {
   double v = 0, v_lowest = 0;
 };
 
-// Largest distance of the turn (v, T) from the two programmed lines.
+// Corner deviation of the turn (v, T): its distance to the corner point.
 double turn_deviation(Point t1, Point t2, double v, double T) {
   const int n = 2000;
   const double dt = T / n;
-  // From the transition's start, which lies on line 1 at v T / 2 before the corner.
+  // From the transition's start, which lies on line 1 at v T / 2 before the corner (the origin).
   Point p{-t1.x * v * T / 2, -t1.y * v * T / 2};
-  double worst = 0;
+  double nearest = std::hypot(p.x, p.y);
   for (int k = 0; k < n; ++k) {
     const double u = (k + 0.5) / n;
     const double s = u < 0.5 ? 2 * u * u : 1 - 2 * (1 - u) * (1 - u);
     p.x += v * (t1.x + (t2.x - t1.x) * s) * dt;
     p.y += v * (t1.y + (t2.y - t1.y) * s) * dt;
-    // to line 1 (up to the corner, the origin) and line 2 (from it)
-    const double a1 = std::min(0.0, p.x * t1.x + p.y * t1.y), a2 = std::max(0.0, p.x * t2.x + p.y * t2.y);
-    const double d1 = std::hypot(p.x - a1 * t1.x, p.y - a1 * t1.y), d2 = std::hypot(p.x - a2 * t2.x, p.y - a2 * t2.y);
-    worst = std::max(worst, std::min(d1, d2));
+    nearest = std::min(nearest, std::hypot(p.x, p.y));
   }
-  return worst;
+  return nearest;
 }
 
 CornerBound corner_bound(Point t1, Point t2, double path_dev, double feed, const MachineConfig& machine) {

@@ -82,15 +82,21 @@ double ContourBuilder::dev_distance(double deviation, const std::vector<double>&
   return deviation * 16 / ((16 - 10 * tangent_scale * c) * s);
 }
 
+double ContourBuilder::turn_distance(double deviation, const std::vector<double>& t1, const std::vector<double>& t2) {
+  const double s = std::sqrt((1 - std::clamp(dot(t1, t2), -1.0, 1.0)) / 2);
+  if (!(s > tolerance::direction)) return inf;
+  return 3 * deviation / s;
+}
+
 namespace {
-// No curve can meet one from d before the end of a block of length `len`
+// The largest d of a curve from d before the end of a block of length `len`
 // that began with a curve of d_start (0: none) to d into a block of length
-// `len_b`: the next curve takes at most half of len_b (d_max), and what a
-// curve leaves of a block is absorbed below absorbed_share (add()).
-bool lone_curve(double len, double d_start, double d, double len_b) {
-  const bool meets_before = d_start > 0 && len - d_start - d < absorbed_share * len + shortest_mm;
-  const bool may_meet_after = len_b - d - len_b / 2 < absorbed_share * len_b + shortest_mm;
-  return !meets_before && !may_meet_after;
+// `len_b` that no other curve can meet: the next curve takes at most half
+// of len_b (d_max), and what a curve leaves of a block is absorbed below
+// absorbed_share (add()).
+double lone_room(double len, double d_start, double len_b) {
+  const double before = d_start > 0 ? len - d_start - absorbed_share * len - shortest_mm : inf;
+  return std::min(before, len_b / 2 - absorbed_share * len_b - shortest_mm);
 }
 
 // Time a corner passed at v along a curve of `length` costs against passing
@@ -128,11 +134,26 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
   // longer tangent would bend it away from the arc (fuzz contour 39000199:
   // a G03 of r 4.8 um into a line, the curve 28 % longer than the path it
   // replaced).
+  // Between lines it is the jerk-limited turn (ContourCurve::Shape::turn),
+  // passed at one ds/dt with its speed dipping in the middle as the bound's.
   const bool arcs = a.full.is_arc() || b.is_arc();
+  using Shape = ContourCurve::Shape;
+  const Shape lone_shape = arcs ? Shape::quintic : Shape::turn;
   const double turn = arcs ? 1.0 : turn_tangent_scale(t1, t2);
   // (A hair inside PATH_DEV: on it to round-off, the check below shrank it
   // by 0.7.)
-  const double d_lone = std::min(d_max, dev_distance(corner.mode.path_dev * (1 - 1e-9), t1, t2, turn));
+  const double lone_dev = corner.mode.path_dev * (1 - 1e-9);
+  const double room = lone_room(len, a.d_start, b.length());
+  // A turn is lone where it finds room within 8/9 of PATH_DEV, and then
+  // grows into the room up to all of it: one that needs the whole block's
+  // half is a polyline's chord (a circle of chords, whose curves must meet
+  // to run at the feed); 8/9 keeps the corners that were lone when the
+  // turn was a quintic (its d: 8/9 of the turn's), which the CAM corpus
+  // measured (a turn that grew beyond the room turned its neighbours into
+  // shared curves: mixed_transitions 22.5 -> 23.6 s).
+  const double d_lone = std::min(
+      d_max, arcs ? dev_distance(lone_dev, t1, t2) : std::min(turn_distance(lone_dev, t1, t2), room));
+  const double d_needed = arcs ? d_lone : std::min(d_max, turn_distance(lone_dev * 8 / 9, t1, t2));
   // Not in a lift range nor at its ends: Advanced Lifting times its landing
   // by the programmed distance left and the velocity of the cycle before;
   // a lone curve across the range's end at the feed, covering more
@@ -140,8 +161,7 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
   // before the lift axis had landed (the test "LIFT-2 KRN-6 G261: the path
   // passes the corners into and out of an Advanced Lifting range", PATH_DEV
   // 0.5).
-  const bool lone = lone_curve(len, a.d_start, d_lone, b.length()) && !a.motion().in_lift_range &&
-                    !after.in_lift_range;
+  const bool lone = d_needed <= room && !a.motion().in_lift_range && !after.in_lift_range;
   // With arcs (and as a check for lines): shrink until the curve with the
   // ends' own curvatures passes within the budget of the corner and, next
   // to an arc, of the path it replaces: at a tangent joint with a
@@ -153,10 +173,10 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
     double d = 0;
     std::optional<ContourCurve> curve;
   };
-  auto fit = [&](double budget, double d, double scale) {
+  auto fit = [&](double budget, double d, double scale, Shape shape) {
     for (int attempt = 0; attempt < 60 && d >= shortest_mm; ++attempt) {
       ContourCurve curve({a.full.position(len - d), a.full.tangent(len - d), a.full.curvature(len - d)},
-                         {b.position(d), b.tangent(d), b.curvature(d)}, scale);
+                         {b.position(d), b.tangent(d), b.curvature(d)}, scale, shape);
       if (curve.distance_to(programmed_corner) <= budget &&
           (!arcs || deviation(curve, a.full, len - d, b, d) <= budget))
         return Fit{d, std::move(curve)};
@@ -165,9 +185,9 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
     return Fit{};
   };
   const double half = corner.mode.path_dev / 2;
-  const Fit shared = fit(half, std::min(d_max, dev_distance(half, t1, t2)), 1.0);
+  const Fit shared = fit(half, std::min(d_max, dev_distance(half, t1, t2)), 1.0, Shape::quintic);
   if (!lone || !shared.curve) return {shared.d, false, 1};
-  const Fit whole = fit(corner.mode.path_dev, d_lone, turn);
+  const Fit whole = fit(corner.mode.path_dev, d_lone, turn, lone_shape);
   if (!whole.curve) return {shared.d, false, 1};
   // Of the curve a corner would have next to others (half of PATH_DEV, its
   // limits in thirds), the turn in all of PATH_DEV, and the turn in half of
@@ -194,8 +214,8 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
   const double loss_whole = loss(*whole.curve, ContourJoint::lone_shares, 1);
   const double loss_half = loss(*whole.curve, ContourJoint::lone_shares, 0.5);
   if (loss_shared <= std::min(loss_whole, loss_half)) return {shared.d, false, 1};
-  if (loss_whole <= loss_half) return {whole.d, true, turn};
-  return {fit(half, whole.d / 2, turn).d, true, turn};
+  if (loss_whole <= loss_half) return {whole.d, true, turn, lone_shape};
+  return {fit(half, whole.d / 2, turn, lone_shape).d, true, turn, lone_shape};
 }
 
 PathSegment ContourBuilder::piece_of(const Open& block, double s_from, double s_to) const {
@@ -212,7 +232,7 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   Open& a = *open_;  // the block after the corner
   auto joint = std::make_shared<ContourJoint>();
   joint->curve = std::make_shared<const ContourCurve>(
-      p.start, ContourCurve::End{p.end.point, p.end.tangent, end_curvature}, p.tangent_scale);
+      p.start, ContourCurve::End{p.end.point, p.end.tangent, end_curvature}, p.tangent_scale, p.shape);
   const double len = a.full.length();
   // Split where the programmed shares meet, so that both halves count the
   // same share of programmed distance per path length.
@@ -333,6 +353,7 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
       p.kappa_cap = corner.lone ? 0.0 : kappa_cap(a.out(), distance(p.start.point, p.end.point));
       p.lone = corner.lone;
       p.tangent_scale = corner.tangent_scale;
+      p.shape = corner.shape;
       p.d = d;
       p.d_before = len - (vanished ? a.d_start : len - d);
       p.tangent_before = a.full.tangent(len);

@@ -73,6 +73,9 @@ class ContourBuilder {
   // curvature its ends get then), a lone corner's up to all of it.
   static double dev_distance(double deviation, const std::vector<double>& t1, const std::vector<double>& t2,
                              double tangent_scale = 1);
+  // The same for the turn (ContourCurve::Shape::turn), whose middle passes
+  // d sin(θ/2) / 3 from the corner.
+  static double turn_distance(double deviation, const std::vector<double>& t1, const std::vector<double>& t2);
 
  private:
   struct Open {
@@ -94,6 +97,7 @@ class ContourBuilder {
     double kappa_cap = 0;  // largest curvature the end may get (PATH_DEV)
     bool lone = false;  // no other curve can meet it (ContourJoint::lone_corner)
     double tangent_scale = 1;  // of its ContourCurve
+    ContourCurve::Shape shape = ContourCurve::Shape::quintic;
     double d = 0;
     double d_before = 0;  // programmed length it replaces before the corner
     std::vector<double> tangent_before;  // of the block before the corner, at the corner
@@ -110,6 +114,7 @@ class ContourBuilder {
     double d = 0;  // the corner distance: the curve from d before the corner to d after it
     bool lone = false;
     double tangent_scale = 1;  // of its ContourCurve: a lone corner's is the turn's
+    ContourCurve::Shape shape = ContourCurve::Shape::quintic;  // a lone corner between lines: the turn
   };
   // b: the geometry of the block after the corner, `after` its motion.
   CornerCurve corner_curve(const Open& a, const PathSegment& b, const Motion& after, const Corner& corner,

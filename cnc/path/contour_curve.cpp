@@ -24,11 +24,40 @@ constexpr double bound_margin = 1.1;
 
 }  // namespace
 
-ContourCurve::ContourCurve(const End& start, const End& end, double tangent_scale) : start_(start), end_(end) {
+namespace {
+// The turn's blend b(u) of the tangents and its derivatives (the path's
+// velocity, acceleration and jerk shape), and its integral B(u).
+double blend(double u) { return u <= 0.5 ? 2 * u * u : 1 - 2 * (1 - u) * (1 - u); }
+double blend_rate(double u) { return u <= 0.5 ? 4 * u : 4 * (1 - u); }
+double blend_jerk(double u) { return u < 0.5 ? 4 : -4; }
+double blend_integral(double u) { return u <= 0.5 ? 2 * u * u * u / 3 : u - 0.5 + 2 * (1 - u) * (1 - u) * (1 - u) / 3; }
+}  // namespace
+
+ContourCurve::ContourCurve(const End& start, const End& end, double tangent_scale, Shape shape)
+    : start_(start), end_(end) {
   const size_t n = start.point.size();
   double chord_sq = 0;
   for (size_t i = 0; i < n; ++i) chord_sq += (end.point[i] - start.point[i]) * (end.point[i] - start.point[i]);
   const double L = std::sqrt(chord_sq) * tangent_scale;
+  if (shape == Shape::turn && L > 0) {
+    // The turn ends at L (t1 + t2) / 2 from its start: a corner's
+    // symmetric span between two lines (to round-off of the coordinates).
+    double miss = 0, bend = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const double d = end.point[i] - start.point[i] - L * (start.tangent[i] + end.tangent[i]) / 2;
+      miss = std::max(miss, std::abs(d));
+      bend = std::max({bend, std::abs(start.curvature[i]), std::abs(end.curvature[i])});
+    }
+    turn_ = miss <= tolerance::length_mm && bend == 0;
+  }
+  if (turn_) {
+    turn_L_ = L;
+    turn_t1_ = start.tangent;
+    turn_dt_.resize(n);
+    for (size_t i = 0; i < n; ++i) turn_dt_[i] = end.tangent[i] - start.tangent[i];
+    table_s_ = {0.0, L};
+    return;
+  }
   coefficients_.resize(n);
   for (size_t i = 0; i < n; ++i) {
     // Bezier control points of the quintic Hermite curve.
@@ -51,6 +80,7 @@ ContourCurve::ContourCurve(const End& start, const End& end, double tangent_scal
 }
 
 double ContourCurve::offset(size_t i, double u) const {
+  if (turn_) return turn_L_ * (u * turn_t1_[i] + turn_dt_[i] * blend_integral(u));
   const std::array<double, 6>& c = coefficients_[i];
   return c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * (c[4] + u * c[5]))));
 }
@@ -74,6 +104,7 @@ double ContourCurve::s_between(double u0, double u1) const {
 double ContourCurve::u_at(double s) const {
   if (s <= 0) return 0;
   if (s >= length()) return 1;
+  if (turn_) return s / turn_L_;
   const size_t k = static_cast<size_t>(std::upper_bound(table_s_.begin(), table_s_.end(), s) - table_s_.begin()) - 1;
   const double lo = double(k) / intervals, hi = double(k + 1) / intervals;
   double u = lo + (hi - lo) * (s - table_s_[k]) / (table_s_[k + 1] - table_s_[k]);
@@ -102,9 +133,18 @@ std::vector<double> ContourCurve::position(double s) const {
 }
 
 void ContourCurve::frame(double u, Frame& f) const {
-  const size_t n = coefficients_.size();
+  const size_t n = start_.point.size();
   if (f.t.size() != n)
     for (std::vector<double>* v : {&f.t, &f.k, &f.dk, &f.r, &f.q, &f.w, &f.normal}) v->resize(n);
+  if (turn_) {  // derivatives by s = L u
+    const double b = blend(u), rate = blend_rate(u) / turn_L_, jerk = blend_jerk(u) / (turn_L_ * turn_L_);
+    for (size_t i = 0; i < n; ++i) {
+      f.t[i] = turn_t1_[i] + turn_dt_[i] * b;
+      f.k[i] = turn_dt_[i] * rate;
+      f.dk[i] = turn_dt_[i] * jerk;
+    }
+    return;
+  }
   std::vector<double>&r = f.r, &q = f.q, &w = f.w, &normal = f.normal;
   double rr = 0;
   for (size_t i = 0; i < n; ++i) {  // d^1..3 P / du^1..3, by Horner
@@ -149,9 +189,25 @@ std::vector<double> ContourCurve::curvature(double s) const {
 }
 
 ContourCurve::AxisBounds ContourCurve::bounds(double s_from, double s_to) const {
-  const size_t n = coefficients_.size();
+  const size_t n = start_.point.size();
   AxisBounds b{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
   const double u0 = u_at(s_from), u1 = u_at(s_to);
+  if (turn_) {
+    // Exact: b is monotonic, b' peaks at u = ½, |b''| = 4 throughout.
+    const double b0 = blend(u0), b1 = blend(u1), rate = blend_rate(std::clamp(0.5, u0, u1)) / turn_L_;
+    const double jerk = 4 / (turn_L_ * turn_L_);
+    double dt_sq = 0;
+    for (size_t i = 0; i < n; ++i) {
+      const double dt = std::abs(turn_dt_[i]);
+      b.tangent[i] = std::max(std::abs(turn_t1_[i] + turn_dt_[i] * b0), std::abs(turn_t1_[i] + turn_dt_[i] * b1));
+      b.curvature[i] = dt * rate;
+      b.curvature_rate[i] = dt * jerk;
+      dt_sq += dt * dt;
+    }
+    b.curvature_norm = std::sqrt(dt_sq) * rate;
+    b.curvature_rate_norm = std::sqrt(dt_sq) * jerk;
+    return b;
+  }
   const int samples = std::max(8, static_cast<int>(bound_samples * (u1 - u0)));
   Frame f;
   for (int k = 0; k <= samples; ++k) {
@@ -177,7 +233,7 @@ ContourCurve::AxisBounds ContourCurve::bounds(double s_from, double s_to) const 
 double ContourCurve::distance_to(const std::vector<double>& point) const {
   auto dist_sq = [&](double u) {
     double sum = 0;
-    for (size_t i = 0; i < coefficients_.size(); ++i) {
+    for (size_t i = 0; i < point.size(); ++i) {
       const double d = offset(i, u) + start_.point[i] - point[i];
       sum += d * d;
     }

@@ -5,10 +5,19 @@
 // that the path stays continuous in tangent and curvature through it.
 // Quintic Hermite form with |dP/du| = L at both ends and d²P/du² = L² k
 // there, L = the chord times `tangent_scale`. Evaluated by path length s
-// (0 .. length()). With tangent_scale = 1 / cos(θ/2) (θ between the end
-// tangents) and end curvatures 0 the curve's velocity is a blend of the
-// two tangents alone, dP/du = L (t1 + (t2 - t1) (3u² - 2u³)): the shape of
-// a jerk-limited turn (docs/CONTOURING.md "Corner speed bound").
+// (0 .. length()).
+//
+// A lone corner between two lines takes another shape (Shape::turn): the
+// jerk-limited turn of docs/CONTOURING.md "Corner speed bound", whose
+// velocity vector blends the two tangents with a triangular acceleration,
+//     dP/du = L (t1 + (t2 - t1) b(u)),  b = 2u² (u <= ½), 1 - 2(1 - u)²,
+// L = the chord / cos(θ/2) (θ between t1 and t2), measured by its
+// parameter: s = L u. A path passing it at one ds/dt turns as that bound
+// does, its speed dipping to cos(θ/2) of ds/dt in the middle, instead of
+// running the whole curve at the speed of its tightest point. |dP/ds| is 1
+// at the ends and at most 1 between; tangent(), curvature() and bounds()
+// are the derivatives by s (not the unit tangent and the curvature), which
+// is what the axes see: velocity dP/ds v, acceleration d²P/ds² v² + dP/ds a.
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -23,7 +32,11 @@ class ContourCurve {
   struct End {
     std::vector<double> point, tangent, curvature;  // per axis
   };
-  ContourCurve(const End& start, const End& end, double tangent_scale = 1);
+  enum class Shape { quintic, turn };
+  // Shape::turn: `start` and `end` d before and d after the corner on two
+  // lines (curvatures 0); anything else makes a quintic.
+  ContourCurve(const End& start, const End& end, double tangent_scale = 1, Shape shape = Shape::quintic);
+  Shape shape() const { return turn_ ? Shape::turn : Shape::quintic; }
 
   double length() const { return table_s_.back(); }
   std::vector<double> position(double s) const;
@@ -51,6 +64,10 @@ class ContourCurve {
   std::vector<std::array<double, 6>> coefficients_;
   End start_, end_;  // what the ends must be, exactly
   std::vector<double> table_s_;  // s at u = k / intervals
+  // Shape::turn: t1, t2 - t1 and L (the coefficients are unused).
+  bool turn_ = false;
+  std::vector<double> turn_t1_, turn_dt_;
+  double turn_L_ = 0;
   // P(u) less the start point, on axis i.
   double offset(size_t i, double u) const;
   struct Frame {
