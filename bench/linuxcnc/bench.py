@@ -109,8 +109,8 @@ class Refused(Exception):
 WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
 # TwinCAT block transition words: the bench applies ONE mode to the whole program
 # (G61 or G64 P0.01 at its top), so all of them are removed:
-#   G60 exact stop (non-modal), G61 (TwinCAT: exact stop with velocity reduction,
-#   non-modal), G260/G261 (contouring off/on), G359/G360 (exact-stop section).
+#   G60 exact stop (non-modal), G61 (TwinCAT: polynomial contouring at this block's
+#   end, non-modal), G260/G261 (contouring off/on), G359/G360 (exact-stop section).
 TRANSITION_G = {60, 61, 260, 261, 359, 360}
 KEEP_G = {0, 1, 2, 3, 17, 18, 19, 40, 90, 91, 94}
 # TwinCAT G word -> LinuxCNC's, and the note printed for it.
