@@ -184,20 +184,17 @@ TEST_CASE("LIFT-2 LIFT-3 KRN-6 a full circle in the lift axis' plane before LIFT
 }
 
 TEST_CASE("DPS-1 KRN-6 dist_prog_start on contouring curves at arcs of 0.3 mm radius and less grows with the chord",
-          "[.][known-bug][channel][contour]") {
-  // Open (docs/FUZZ.md M and U): a curve counts the programmed distance of
-  // the block parts it replaces (DPS-1: the blocks' lengths); at tight
-  // arcs it is longer than them, so dist_prog_start grows up to 0.22 % less
-  // than the chord the axes move, where the fuzz allows contoured programs
-  // 0.1 %. Contour 13006359 (G03 of r 0.075 mm, PATH_DEV 0.158), lift
-  // 8001172 (r 5.6 um) and 15006312 (G02 of r 0.124 mm); issue 36's fresh
-  // contour 26000330 (G03 R-0.145, 0.27 % less) and lift 27002862 (a G03 of
-  // r 2.9 um); contour 39300454 (a G02 of r 0.075 mm, 0.11 % less; found
-  // with issue 36 item 4's lone corners, fails on the build before them
-  // too); contour 40500275 (a G03 R0.284, 0.12 % less; found with the
-  // lone corner's turn, fails on the build before it too). Whether the
-  // oracle or the map is to change waits for the path pieces of issue 35,
-  // which carry that map.
+          "[channel][contour][fuzz]") {
+  // M and U (docs/FUZZ.md): a curve counts the programmed distance of the
+  // block parts it replaces (DPS-1: the blocks' lengths); at tight arcs it
+  // was longer than them, so dist_prog_start grew up to 0.27 % less than the
+  // chord the axes moved, where the fuzz allows contoured programs 0.1 %.
+  // Contour 13006359 (G03 of r 0.075 mm, PATH_DEV 0.158), lift 8001172 (r
+  // 5.6 um) and 15006312 (G02 of r 0.124 mm); contour 26000330 (G03
+  // R-0.145, 0.27 % less) and lift 27002862 (a G03 of r 2.9 um); contour
+  // 39300454 (a G02 of r 0.075 mm) and 40500275 (a G03 R0.284). Next to an
+  // arc a curve now shrinks until it is no longer than the path it replaces
+  // (ContourBuilder::corner_curve).
   check_seeds(fuzz::ProgramKind::contour, {13006359, 26000330, 39300454, 40500275});
   check_seeds(fuzz::ProgramKind::lift, {8001172, 15006312, 27002862});
 }
