@@ -20,18 +20,6 @@ double distance(const std::vector<double>& a, const std::vector<double>& b) {
 constexpr double on_motion_mm = tolerance::no_length_mm;
 using tolerance::shortest_part_mm;
 
-// Nothing is left between `point` and `target` only within the round-off of
-// their coordinates: any longer rest is moved, however short. The path goes
-// on from where it stands, and a jump d to the next block's start shows in
-// the setpoints as a jerk of d / T³ (fuzz hsc 40510261: a turn 0.8e-9 mm
-// into the next block, dropped below the 1e-9 mm this was, put 0.8 mm/s³
-// on X's 40,000; the limit check allows 1e-6 of it).
-bool nothing_left(const std::vector<double>& point, const std::vector<double>& target) {
-  double scale = 1;
-  for (double x : target) scale = std::max(scale, std::abs(x));
-  return distance(point, target) <= 8 * std::numeric_limits<double>::epsilon() * scale;
-}
-
 // How far along the motion the point lies from its start; none if it is off it.
 std::optional<double> along(const Motion& motion, const PathSegment& whole, const std::vector<double>& point,
                             bool at_end_if_closed) {
@@ -46,6 +34,12 @@ std::optional<double> along(const Motion& motion, const PathSegment& whole, cons
 }
 
 }  // namespace
+
+bool same_point(const std::vector<double>& a, const std::vector<double>& b) {
+  double scale = 1;
+  for (double x : b) scale = std::max(scale, std::abs(x));
+  return distance(a, b) <= 8 * std::numeric_limits<double>::epsilon() * scale;
+}
 
 Motion motion_until(Motion motion, const std::vector<double>& point) {
   motion.end = point;
@@ -72,7 +66,7 @@ std::optional<Motion> rest_of_motion(const Motion& motion, const std::vector<dou
     const double rest = backward ? *s : whole.length() - *s;
     if (rest > shortest_part_mm) return backward ? reversed(motion_until(motion, point)) : motion_from(motion, point);
   }
-  if (nothing_left(point, target)) return std::nullopt;
+  if (same_point(point, target)) return std::nullopt;
   Motion line = motion;  // G00 stays G00: with no F programmed a G01 line would not move
   if (line.type != MotionType::rapid) line.type = MotionType::linear;
   line.start = point;

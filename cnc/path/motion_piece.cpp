@@ -20,14 +20,18 @@ MotionPiece MotionPiece::of_block(const Block& block, size_t index, const PathSe
 
 std::optional<MotionPiece> MotionPiece::on_curve(const Block& block, size_t index, const CurveSpan& span,
                                                  const MachineConfig& machine) {
-  if (!(span.length() > tolerance::length_mm)) return std::nullopt;
+  if (!(span.length() > 0)) return std::nullopt;
+  const PathSegment on(span.joint, span.from, span.to, span.reversed, machine);
+  // A span the path stands on however short is moved, as its chord (fuzz
+  // AH: a turn 0.58e-9 mm into an HSC span, dropped below the 1e-9 mm this
+  // was, jumped to the span's start).
+  if (same_point(on.position(0), on.end())) return std::nullopt;
   MotionPiece piece;
   piece.block = index;
   piece.slope = block.slope;
   piece.curve = span;
   piece.motion = block.motion;  // the chord: within PATH_DEV of the curve
   if (piece.motion.type != MotionType::rapid) piece.motion.type = MotionType::linear;
-  const PathSegment on(span.joint, span.from, span.to, span.reversed, machine);
   piece.motion.start = on.position(0);
   piece.motion.end = on.end();
   piece.covered = on.covered_distance();

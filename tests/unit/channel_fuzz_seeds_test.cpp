@@ -224,16 +224,19 @@ TEST_CASE("KRN-3 KRN-9 DPS-1 the piece the path runs on is planned with the piec
   check_seeds(fuzz::ProgramKind::hsc, {40000192, 32});
 }
 
-TEST_CASE("KRN-3 a turn moves what is left of the block the path stands in, however short: no jump to the block "
-          "before",
+TEST_CASE("KRN-3 a turn moves what is left of the block or spline span the path stands in, however short: no jump "
+          "to the block before",
           "[channel][hsc][fuzz]") {
   // AG (docs/FUZZ.md), fresh hsc seed 40510261: the path had moved 0.8e-9
   // mm into the block after a dwell when the PLC turned it back; a rest
   // below 1e-9 mm counted as none, the path went on from the programmed
   // end of the block before, and that jump put 0.8 mm/s^3 on X's jerk of
   // 40,000 as it started (the limit check allows 1e-6 of it). Only a rest
-  // within the coordinates' round-off is none now.
-  check_seeds(fuzz::ProgramKind::hsc, {40510261});
+  // within the coordinates' round-off is none now. AH, fresh hsc seed
+  // 40781308: alike on an HSC span, turned 0.58e-9 mm after its start; the
+  // span's rest, below 1e-9 mm, was dropped and the path went back from the
+  // programmed point: Y 40,000.53 mm/s^3.
+  check_seeds(fuzz::ProgramKind::hsc, {40510261, 40781308});
 }
 
 TEST_CASE("DPS-3 KRN-2 a program refused from where the axes stood after a reset errs when the look-ahead's decoder "
