@@ -52,7 +52,6 @@ ContourCurve::ContourCurve(const End& start, const End& end, double tangent_scal
   }
   if (turn_) {
     turn_L_ = L;
-    turn_t1_ = start.tangent;
     turn_dt_.resize(n);
     for (size_t i = 0; i < n; ++i) turn_dt_[i] = end.tangent[i] - start.tangent[i];
     table_s_ = {0.0, L};
@@ -80,7 +79,7 @@ ContourCurve::ContourCurve(const End& start, const End& end, double tangent_scal
 }
 
 double ContourCurve::offset(size_t i, double u) const {
-  if (turn_) return turn_L_ * (u * turn_t1_[i] + turn_dt_[i] * blend_integral(u));
+  if (turn_) return turn_L_ * (u * start_.tangent[i] + turn_dt_[i] * blend_integral(u));
   const std::array<double, 6>& c = coefficients_[i];
   return c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * (c[4] + u * c[5]))));
 }
@@ -139,7 +138,7 @@ void ContourCurve::frame(double u, Frame& f) const {
   if (turn_) {  // derivatives by s = L u
     const double b = blend(u), rate = blend_rate(u) / turn_L_, jerk = blend_jerk(u) / (turn_L_ * turn_L_);
     for (size_t i = 0; i < n; ++i) {
-      f.t[i] = turn_t1_[i] + turn_dt_[i] * b;
+      f.t[i] = start_.tangent[i] + turn_dt_[i] * b;
       f.k[i] = turn_dt_[i] * rate;
       f.dk[i] = turn_dt_[i] * jerk;
     }
@@ -199,7 +198,8 @@ ContourCurve::AxisBounds ContourCurve::bounds(double s_from, double s_to) const 
     double dt_sq = 0;
     for (size_t i = 0; i < n; ++i) {
       const double dt = std::abs(turn_dt_[i]);
-      b.tangent[i] = std::max(std::abs(turn_t1_[i] + turn_dt_[i] * b0), std::abs(turn_t1_[i] + turn_dt_[i] * b1));
+      const double t1 = start_.tangent[i];
+      b.tangent[i] = std::max(std::abs(t1 + turn_dt_[i] * b0), std::abs(t1 + turn_dt_[i] * b1));
       b.curvature[i] = dt * rate;
       b.curvature_rate[i] = dt * jerk;
       dt_sq += dt * dt;

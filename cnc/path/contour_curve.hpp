@@ -64,9 +64,9 @@ class ContourCurve {
   std::vector<std::array<double, 6>> coefficients_;
   End start_, end_;  // what the ends must be, exactly
   std::vector<double> table_s_;  // s at u = k / intervals
-  // Shape::turn: t1, t2 - t1 and L (the coefficients are unused).
+  // Shape::turn: t2 - t1 and L (t1 is start_'s; the coefficients are unused).
   bool turn_ = false;
-  std::vector<double> turn_t1_, turn_dt_;
+  std::vector<double> turn_dt_;
   double turn_L_ = 0;
   // P(u) less the start point, on axis i.
   double offset(size_t i, double u) const;
