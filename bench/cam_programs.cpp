@@ -273,6 +273,12 @@ int main(int argc, char** argv) {
   app.add_option("--path-dev", path_dev, "PATH_DEV of G261 and #HSC, mm")->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--machine", machine_file, "machine file")->capture_default_str();
+  double jerk_factor = 1;
+  app.add_option("--jerk-factor", jerk_factor,
+                 "every axis' j_max times this (100: acceleration-limited in effect, like LinuxCNC's planner; the "
+                 "limit check then holds the scaled jerk)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   bool linuxcnc = false;
   app.add_flag("--linuxcnc", linuxcnc,
                "also run the programs on LinuxCNC's simulator (bench/linuxcnc/run.sh; Debian's linuxcnc-uspace, a "
@@ -285,7 +291,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.footer("Documentation: docs/HSC.md and docs/PERFORMANCE.md in the source tree");
   HIL_PARSE_COMMAND_LINE(app, argc, argv);
-  const MachineConfig machine = parse_machine_config(YAML::LoadFile(machine_file));
+  MachineConfig machine = parse_machine_config(YAML::LoadFile(machine_file));
+  for (AxisConfig& axis : machine.axes) axis.j_max *= jerk_factor;
   const auto max_cycles = static_cast<int64_t>(max_time_s / machine.cycle_time_s());
 
   std::vector<std::pair<std::string, std::string>> sources;  // name, program as written
@@ -315,11 +322,12 @@ int main(int argc, char** argv) {
     reference = linuxcnc_rows(names);
     if (reference.empty()) std::printf("LinuxCNC gave no figures (bench/linuxcnc/README.md)\n");
   }
-  char dev[64];
+  char dev[64], jerk[64] = "";
   std::snprintf(dev, sizeof dev, "%.6g", path_dev);
-  std::printf("machine %s, PATH_DEV %s mm; time: first to last cycle of motion; v: path velocity in G01/G02/G03, "
+  if (jerk_factor != 1) std::snprintf(jerk, sizeof jerk, " (j_max x %g)", jerk_factor);
+  std::printf("machine %s%s, PATH_DEV %s mm; time: first to last cycle of motion; v: path velocity in G01/G02/G03, "
               "mm/s; dev: largest distance from the programmed path, mm\n",
-              machine.name.c_str(), dev);
+              machine.name.c_str(), jerk, dev);
   std::printf("%-26s %-9s %8s %8s %7s %7s %7s %9s %5s %9s %9s %9s\n", "program", "way", "time_s", "ideal_s", "x_ideal",
               "v_med", "v_p5", "dev_mm", "viol", "us/block", "p99_us", "max_us");
   std::vector<double> start;
