@@ -17,6 +17,10 @@ const double cos_sharpest = std::cos(170.0 * M_PI / 180.0);
 // Shorter corner distances are not worth a curve (and a shorter rest of
 // a block is no piece: an arc of it could not be told from a full circle).
 constexpr double shortest_mm = tolerance::no_length_mm;
+// Largest share of a block (of what is left of it) a one-sided curve takes
+// (ContourBuilder::enter_from, flush_into): the rest keeps a middle between
+// it and a curve at the block's other end.
+constexpr double one_sided_share = 0.4;
 // Share of a block between two curves that is absorbed into them.
 constexpr double absorbed_share = 1e-3;
 // Largest value of the quintic Hermite basis functions of the end second
@@ -61,6 +65,24 @@ double deviation(const ContourCurve& curve, const PathSegment& a, double a_from,
     const double on_a = std::clamp(a.length_to(q), a_from, a.length());
     const double on_b = std::clamp(b.length_to(q), 0.0, b_to);
     worst = std::max(worst, std::min(distance(q, a.position(on_a)), distance(q, b.position(on_b))));
+  }
+  return worst;
+}
+
+// Next to a tight arc a curve may be longer than the path it replaces,
+// whose programmed distance it counts (DPS-1): dist_prog_start would grow
+// slower than the axes move (fuzz M and U: by up to 0.27 % at arcs of
+// r <= 0.3 mm). Such a curve shrinks until it is not, but for this share.
+constexpr double longest_share = 1 + 5e-4;
+
+// Largest distance of `curve` from `block` (sampled, to the nearest point
+// of the whole block).
+double deviation_from(const ContourCurve& curve, const PathSegment& block) {
+  constexpr int samples = 32;
+  double worst = 0;
+  for (int k = 1; k < samples; ++k) {
+    const std::vector<double> q = curve.position(curve.length() * k / samples);
+    worst = std::max(worst, distance(q, block.position(std::clamp(block.length_to(q), 0.0, block.length()))));
   }
   return worst;
 }
@@ -115,6 +137,45 @@ double turn_tangent_scale(const std::vector<double>& t1, const std::vector<doubl
 }
 }  // namespace
 
+// The bend of the polyline around the line `a`, across its joint: the
+// turning per length of its two corners (the one into it from the curve
+// `before`, the one out of it into `t_after` over `after_span`): their mean
+// where they are alike, the smaller where they turn the same way but differ
+// more than twofold, and 0 where they do not turn the same way (minmod, so
+// that a sharp corner next to gentle chords does not bend the gentle side:
+// the curve would grow longer than the blocks it replaces); at most `cap`.
+std::vector<double> ContourBuilder::line_bend(const PendingCurve& before, const PathSegment& a,
+                                              const std::vector<double>& t_after, double after_span, double cap) {
+  const double len = a.length();
+  const std::vector<double> t_a = a.tangent(0);
+  std::vector<double> c_before(t_a.size()), c_after(t_a.size());
+  for (size_t i = 0; i < t_a.size(); ++i) {
+    c_before[i] = (t_a[i] - before.tangent_before[i]) / ((before.length_before + len) / 2);
+    c_after[i] = (t_after[i] - t_a[i]) / after_span;
+  }
+  const double along_before = dot(c_before, t_a), along_after = dot(c_after, t_a);
+  for (size_t i = 0; i < t_a.size(); ++i) {
+    c_before[i] -= along_before * t_a[i];
+    c_after[i] -= along_after * t_a[i];
+  }
+  const double nb = norm(c_before), na = norm(c_after), same = dot(c_before, c_after);
+  std::vector<double> k(t_a.size(), 0.0);
+  if (same > 0 && nb > 0 && na > 0) {
+    if (std::max(nb, na) <= 2 * std::min(nb, na)) {
+      // Alike (a circle of chords, with the rounding of its points):
+      // their mean, which halves the rounding's noise.
+      for (size_t i = 0; i < k.size(); ++i) k[i] = (c_before[i] + c_after[i]) / 2;
+    } else {
+      const std::vector<double>& smaller = nb < na ? c_before : c_after;
+      for (size_t i = 0; i < k.size(); ++i) k[i] = smaller[i] * same / (nb * na);
+    }
+  }
+  const double size = norm(k);
+  if (size > cap)
+    for (double& x : k) x *= cap / size;
+  return k;
+}
+
 ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const PathSegment& b, const Motion& after,
                                                          const Corner& corner, double d_max) const {
   if (!needs_curve(a.full, b)) return {};
@@ -168,11 +229,8 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
   // curvature step the curve passes the joint itself but leaves the arcs
   // between (issue 36: arcs of radius 7 and 15 in an S, 0.060 mm from the
   // path with PATH_DEV 0.01).
-  // Next to a tight arc a curve may also be longer than the 2d of path it
-  // replaces, whose programmed distance it counts (DPS-1): dist_prog_start
-  // would grow slower than the axes move (fuzz M and U: by up to 0.27 % at
-  // arcs of r <= 0.3 mm). It shrinks until it is not, but for 5e-4.
-  constexpr double longest_share = 1 + 5e-4;
+  // Next to a tight arc it may also not be longer than the 2d of path it
+  // replaces (longest_share).
   const std::vector<double> programmed_corner = a.full.end();
   struct Fit {
     double d = 0;
@@ -247,6 +305,13 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   const double covered = a.full.covered_distance() * a.d_start / len;
   a.covered_used += covered;
   joint->lone_corner = p.lone;
+  if (p.one_sided) {
+    joint->parts = {{a.piece.block, covered, a.full.programmed_velocity(), a.motion().path_caps, length}};
+    std::shared_ptr<const ContourJoint> shared = std::move(joint);
+    out.push_back({a.piece.block, PathSegment(shared, 0, length, false, machine_), a.piece.slope, false, true, false});
+    pending_.reset();
+    return;
+  }
   joint->parts = {{p.from_index, p.from_covered, p.from_velocity, p.from_caps, split},
                   {a.piece.block, covered, a.full.programmed_velocity(), a.motion().path_caps, length}};
   std::shared_ptr<const ContourJoint> shared = std::move(joint);
@@ -283,7 +348,30 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
   std::vector<PathPiece> out;
   stop_before = stop_before || exact_stop_next_;
   exact_stop_next_ = false;
+  const std::optional<Entry> entry = std::exchange(entry_, std::nullopt);
   double d_start = 0;
+  // The lead-in waits, as any curve, for the block after it: where the
+  // next curve takes the rest of the block, the two meet with the
+  // polyline's bend (the spline's last turn counts as the corner before:
+  // its tangent over no length).
+  if (!open_ && entry && !stop_before) {
+    // Half of PATH_DEV: its end may get curvature later (kappa_cap).
+    const OneSidedCurve lead_in = one_sided_curve(entry->end, segment, piece.motion, entry->corner, true,
+                                                  segment.length() / 2, entry->corner.mode.path_dev / 2);
+    if (lead_in.curve) {
+      d_start = lead_in.d;
+      PendingCurve p;
+      p.start = entry->end;
+      p.end = {segment.position(d_start), segment.tangent(d_start), segment.curvature(d_start)};
+      p.corner = segment.position(0);
+      p.from_index = piece.block;
+      p.kappa_cap = kappa_cap(entry->corner, distance(p.start.point, p.end.point));
+      p.one_sided = true;
+      p.d = d_start;
+      p.tangent_before = entry->end.tangent;
+      pending_ = std::move(p);
+    }
+  }
   if (open_) {
     Open& a = *open_;
     const double len = a.full.length();
@@ -304,43 +392,9 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
       start_k = a.full.curvature(a.d_start);
       const MotionType type = a.motion().type;
       if (!a.full.is_contour_curve() && type != MotionType::arc_cw && type != MotionType::arc_ccw) {
-        // The bend of the polyline around the line, across its joint: the
-        // turning per length of its two corners: their mean where they are
-        // alike, the smaller where they turn the same way but differ more
-        // than twofold, and 0 where they do not turn the same way (minmod,
-        // so that a sharp corner next to gentle chords does not bend the
-        // gentle side: the curve would grow longer than the blocks it
-        // replaces).
-        const PendingCurve& before = *pending_;
-        const std::vector<double> t_a = a.full.tangent(0), t_b = segment.tangent(0);
-        std::vector<double> c_before(t_a.size()), c_after(t_a.size());
-        for (size_t i = 0; i < t_a.size(); ++i) {
-          c_before[i] = (t_a[i] - before.tangent_before[i]) / ((before.length_before + len) / 2);
-          c_after[i] = (t_b[i] - t_a[i]) / ((len + segment.length()) / 2);
-        }
-        const double along_before = dot(c_before, t_a), along_after = dot(c_after, t_a);
-        for (size_t i = 0; i < t_a.size(); ++i) {
-          c_before[i] -= along_before * t_a[i];
-          c_after[i] -= along_after * t_a[i];
-        }
-        const double nb = norm(c_before), na = norm(c_after), same = dot(c_before, c_after);
-        std::vector<double> k(t_a.size(), 0.0);
-        if (same > 0 && nb > 0 && na > 0) {
-          if (std::max(nb, na) <= 2 * std::min(nb, na)) {
-            // Alike (a circle of chords, with the rounding of its points):
-            // their mean, which halves the rounding's noise.
-            for (size_t i = 0; i < k.size(); ++i) k[i] = (c_before[i] + c_after[i]) / 2;
-          } else {
-            const std::vector<double>& smaller = nb < na ? c_before : c_after;
-            for (size_t i = 0; i < k.size(); ++i) k[i] = smaller[i] * same / (nb * na);
-          }
-        }
         const double chord = distance(start_point, segment.position(d));
-        const double cap = std::min(before.kappa_cap, kappa_cap(a.out(), chord));
-        const double size = norm(k);
-        if (size > cap)
-          for (double& x : k) x *= cap / size;
-        start_k = k;
+        start_k = line_bend(*pending_, a.full, segment.tangent(0), (len + segment.length()) / 2,
+                            std::min(pending_->kappa_cap, kappa_cap(a.out(), chord)));
       }
     }
     if (pending_) emit_curve(vanished ? start_k : a.full.curvature(a.d_start), out);
@@ -375,6 +429,92 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
   return out;
 }
 
+ContourBuilder::OneSidedCurve ContourBuilder::one_sided_curve(const ContourCurve::End& fixed,
+                                                              const PathSegment& block, const Motion& motion,
+                                                              const Corner& corner, bool lead_in, double d_max,
+                                                              double budget) const {
+  // Not in a lift range: its caps hold per block, and Advanced Lifting
+  // times its landing by the programmed distance (corner_curve's lone
+  // curves alike).
+  // Not on an arc: its rest could be the full circle again (fuzz hsc seed
+  // 41002823: a G02 full circle's lead-out, dist_prog_start one circle
+  // too far at the end).
+  if (corner.transition != BlockTransition::contour || motion.in_lift_range || block.is_contour_curve() ||
+      block.is_arc())
+    return {};
+  const double len = block.length(), at = lead_in ? 0 : len;
+  if (!same_point(block.position(at), fixed.point)) return {};
+  const std::vector<double> t = block.tangent(at), k = block.curvature(at);
+  if (dot(fixed.tangent, t) < cos_sharpest) return {};
+  bool differs = false;  // as needs_curve
+  const double kappa = std::max(norm(k), norm(fixed.curvature));
+  for (size_t i = 0; i < t.size(); ++i)
+    differs = differs || std::abs(t[i] - fixed.tangent[i]) > tolerance::direction ||
+              std::abs(k[i] - fixed.curvature[i]) > tolerance::curvature_share * kappa;
+  if (!differs) return {};
+  const bool dev = corner.mode.type == ContourMode::Type::dev;
+  double d = dev ? d_max : std::min(d_max, corner.mode.dist);
+  for (int attempt = 0; attempt < 60 && d >= shortest_mm; ++attempt) {
+    const double s = lead_in ? d : len - d;
+    const ContourCurve::End on_block{block.position(s), block.tangent(s), block.curvature(s)};
+    auto curve = std::make_shared<const ContourCurve>(lead_in ? fixed : on_block, lead_in ? on_block : fixed);
+    // Never longer than the d of block it replaces, whose distance it
+    // counts (DPS-1), in DIST mode too: so only a turn of up to about 4
+    // degrees gets one (fuzz hsc seed 41000100: a lead-in turning 162
+    // degrees counted 0.80 of the path it ran).
+    if (curve->length() <= d * longest_share && (!dev || deviation_from(*curve, block) <= budget))
+      return {d, std::move(curve)};
+    d *= 0.7;
+  }
+  return {};
+}
+
+PathPiece ContourBuilder::lead_out_piece(const std::shared_ptr<const ContourCurve>& curve) {
+  Open& a = *open_;
+  auto joint = std::make_shared<ContourJoint>();
+  joint->curve = curve;
+  const double length = curve->length();
+  joint->parts = {{a.piece.block, a.full.covered_distance() - a.covered_used, a.full.programmed_velocity(),
+                   a.motion().path_caps, length}};
+  std::shared_ptr<const ContourJoint> shared = std::move(joint);
+  return {a.piece.block, PathSegment(shared, 0, length, false, machine_), a.piece.slope, false, false, true};
+}
+
+std::vector<PathPiece> ContourBuilder::flush_into(const ContourCurve::End& spline_start) {
+  std::vector<PathPiece> out;
+  if (!open_) return out;
+  Open& a = *open_;
+  const double len = a.full.length();
+  // Where a curve ends on the block, the lead-out takes all the rest and
+  // meets it with the polyline's bend (the spline's first turn counts as
+  // the corner after: over half the block); else, or where that leaves
+  // PATH_DEV, it takes at most one_sided_share of the block.
+  const OneSidedCurve check = one_sided_curve(spline_start, a.full, a.motion(), a.out(), false,
+                                              one_sided_share * (len - a.d_start), a.out().mode.path_dev);
+  if (!check.curve) {
+    close(out);
+    return out;
+  }
+  if (pending_ && a.d_start > 0) {
+    const std::vector<double> k = line_bend(*pending_, a.full, spline_start.tangent, len / 2, pending_->kappa_cap);
+    auto meeting = std::make_shared<const ContourCurve>(
+        ContourCurve::End{a.full.position(a.d_start), a.full.tangent(a.d_start), k}, spline_start);
+    const bool dev = a.out().mode.type == ContourMode::Type::dev;
+    if (meeting->length() <= (len - a.d_start) * longest_share &&
+        (!dev || deviation_from(*meeting, a.full) <= a.out().mode.path_dev)) {
+      emit_curve(k, out);
+      out.push_back(lead_out_piece(meeting));
+      open_.reset();
+      return out;
+    }
+  }
+  if (pending_) emit_curve(a.full.curvature(a.d_start), out);
+  emit_middle(check.d, out);
+  out.push_back(lead_out_piece(check.curve));
+  open_.reset();
+  return out;
+}
+
 std::vector<PathPiece> ContourBuilder::flush() {
   std::vector<PathPiece> out;
   if (open_) close(out);
@@ -382,6 +522,7 @@ std::vector<PathPiece> ContourBuilder::flush() {
 }
 
 void ContourBuilder::clear() {
+  entry_.reset();
   open_.reset();
   pending_.reset();
   exact_stop_next_ = false;

@@ -65,6 +65,18 @@ class ContourBuilder {
   // not come here (an HSC spline, KRN-9): the path stands before it.
   bool take_exact_stop() { return std::exchange(exact_stop_next_, false); }
 
+  // Where an HSC spline (KRN-9) meets a block whose transition is
+  // contoured, the curve lies on the block alone; the spline keeps its
+  // fitted shape and its knot on the programmed point. Without it the
+  // joint was a corner of up to half a chord's turn, a stop (docs/HSC.md).
+  // enter_from: the spline's last part ended at `spline_end`, leaving its
+  // block as `corner` says; the next block added begins with the curve
+  // from there (lead-in).
+  void enter_from(const ContourCurve::End& spline_end, const Corner& corner) { entry_ = Entry{spline_end, corner}; }
+  // A spline begins at `spline_start`: the open block ends with the curve
+  // onto it where its transition is contoured (lead-out), else as flush().
+  std::vector<PathPiece> flush_into(const ContourCurve::End& spline_start);
+
   // The corner distance d at which a curve between tangents t1, t2 (unit)
   // with end curvatures 0 (lines) and end tangents tangent_scale (λ) times
   // its chord passes `deviation` from the corner:
@@ -102,7 +114,12 @@ class ContourBuilder {
     double d_before = 0;  // programmed length it replaces before the corner
     std::vector<double> tangent_before;  // of the block before the corner, at the corner
     double length_before = 0;
+    // A lead-in from a spline's end (enter_from): all of it belongs to the
+    // block after the corner.
+    bool one_sided = false;
   };
+  static std::vector<double> line_bend(const PendingCurve& before, const PathSegment& a,
+                                       const std::vector<double>& t_after, double after_span, double cap);
 
   // The pending curve with `end_curvature` at its end, as two halves.
   void emit_curve(std::vector<double> end_curvature, std::vector<PathPiece>& out);
@@ -120,7 +137,26 @@ class ContourBuilder {
   CornerCurve corner_curve(const Open& a, const PathSegment& b, const Motion& after, const Corner& corner,
                            double d_max) const;
 
+  // The curve between `fixed` (a spline's end or start) and the programmed
+  // `block`: from `fixed` to d into it (lead_in), or from d before its end
+  // to `fixed`; none (d = 0) where nothing is to be contoured or no curve
+  // of at least shortest_mm keeps PATH_DEV.
+  struct OneSidedCurve {
+    double d = 0;
+    std::shared_ptr<const ContourCurve> curve;
+  };
+  // Within `budget` of the block (contour mode DEV).
+  OneSidedCurve one_sided_curve(const ContourCurve::End& fixed, const PathSegment& block, const Motion& motion,
+                                const Corner& corner, bool lead_in, double d_max, double budget) const;
+  // `curve` as the open block's last piece, covering what is left of it.
+  PathPiece lead_out_piece(const std::shared_ptr<const ContourCurve>& curve);
+
+  struct Entry {
+    ContourCurve::End end;
+    Corner corner;
+  };
   const MachineConfig& machine_;
+  std::optional<Entry> entry_;  // enter_from's, for the next block added
   std::optional<Open> open_;
   std::optional<PendingCurve> pending_;
   bool exact_stop_next_ = false;  // the block closed last ends with an exact stop

@@ -264,9 +264,11 @@ void HscSpline::emit_span(size_t from, size_t to, const Knot& a, const Knot& b, 
   std::shared_ptr<const ContourJoint> shared = std::move(joint);
   for (size_t i = from; i < to; ++i) {
     const size_t part = i - from;
-    out.emplace_back(PathPiece{members_[i].piece.block,
-                               PathSegment(shared, shared->begin(part), shared->parts[part].end, false, machine_),
-                               members_[i].piece.slope, members_[i].stop_before, true, true});
+    out.emplace_back(SplinePiece{
+        PathPiece{members_[i].piece.block,
+                  PathSegment(shared, shared->begin(part), shared->parts[part].end, false, machine_),
+                  members_[i].piece.slope, members_[i].stop_before, true, true},
+        *members_[i].piece.out});
   }
 }
 

@@ -52,8 +52,15 @@ struct SeparatedBlock {
   PathSegment segment;
   bool stop_before = false;
 };
+// One block's part of a span, and how the path leaves that block (a
+// contoured transition after the spline's last block: the builder's curve
+// into the block after it, ContourBuilder::enter_from).
+struct SplinePiece {
+  PathPiece piece;
+  Corner exit;
+};
 // What the spline hands on, in program order.
-using HscOutput = std::variant<PathPiece, SeparatedBlock>;
+using HscOutput = std::variant<SplinePiece, SeparatedBlock>;
 
 class HscSpline {
  public:

@@ -132,8 +132,19 @@ void LookAhead::plan_pushed(size_t before) {
   if (blocks_.size() > before) backward_pass(blocks_.size() - 1, before);
 }
 
+namespace {
+ContourCurve::End end_of(const PathSegment& segment, double s) {
+  return {segment.position(s), segment.tangent(s), segment.curvature(s)};
+}
+}  // namespace
+
 void LookAhead::add_to_builder(const MotionPiece& piece, PathSegment&& segment, bool stop_before) {
   ++programmed_;
+  if (spline_exit_ && !blocks_.empty()) {
+    const PathSegment& spline = blocks_.back().segment;
+    builder_.enter_from(end_of(spline, spline.length()), *spline_exit_);
+  }
+  spline_exit_.reset();
   if (!piece.out) {
     flush();
     push_piece({piece.block, std::move(segment), piece.slope, stop_before, true, true});
@@ -144,17 +155,22 @@ void LookAhead::add_to_builder(const MotionPiece& piece, PathSegment&& segment, 
 
 // KRN-9: the builder may hold the block before a spline until the spline
 // hands on its first part (the block after it may be separated: then the
-// builder contours into it, G261).
+// builder contours into it, G261). Where a spline and a block whose
+// transition is contoured meet, the builder's curve lies on the block
+// (ContourBuilder::enter_from, flush_into).
 void LookAhead::take(std::vector<HscOutput>&& items) {
   for (HscOutput& item : items) {
     if (auto* separated = std::get_if<SeparatedBlock>(&item)) {
       add_to_builder(separated->piece, std::move(separated->segment), separated->stop_before);
       continue;
     }
-    PathPiece& part = std::get<PathPiece>(item);
-    for (PathPiece& piece : builder_.flush()) push_piece(std::move(piece));
+    SplinePiece& spline = std::get<SplinePiece>(item);
+    PathPiece& part = spline.piece;
+    for (PathPiece& piece : part.stop_before ? builder_.flush() : builder_.flush_into(end_of(part.segment, 0)))
+      push_piece(std::move(piece));
     part.stop_before = part.stop_before || builder_.take_exact_stop();
     push_spline_piece(std::move(part));
+    spline_exit_ = spline.exit;
   }
 }
 
@@ -188,6 +204,7 @@ void LookAhead::pop_front() {
 }
 
 void LookAhead::clear() {
+  spline_exit_.reset();
   blocks_.clear();
   builder_.clear();
   hsc_.clear();
@@ -195,6 +212,7 @@ void LookAhead::clear() {
 }
 
 void LookAhead::push_piece(PathPiece&& piece) {
+  spline_exit_.reset();
   double jerk_share = 1;
   if (!blocks_.empty()) {
     const Junction j = junction(blocks_.back().segment, piece.segment, machine_);

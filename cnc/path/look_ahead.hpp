@@ -111,6 +111,9 @@ class LookAhead {
   const MachineConfig& machine_;
   ContourBuilder builder_;
   HscSpline hsc_;
+  // How the path leaves the block of the spline piece pushed last, while
+  // nothing was pushed after it (the builder's curve into the next block).
+  std::optional<Corner> spline_exit_;
   size_t programmed_ = 0;  // blocks pushed and not yet popped (the last piece of each)
   size_t capacity_;
   double factor_ = 1;
