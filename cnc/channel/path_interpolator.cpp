@@ -131,39 +131,6 @@ void PathInterpolator::begin_front(const MotionState& state, double t0) {
 // where the look-ahead has seen one block more, and when the velocity
 // factor changes.
 void PathInterpolator::plan(const MotionState& state, double t0) {
-  plan_.start_cycles = t0 / machine_.cycle_time_s();
-  if (const std::optional<Phase> unwind = unwinding(state, look_ahead_.stretch(state.v).lim)) {
-    plan_stretch(advance(state, *unwind, unwind->duration));
-    if (plan_.profile.phases().size() < PhaseList::capacity) {
-      PhaseList phases;
-      phases.push_back(*unwind);
-      for (const Phase& ph : plan_.profile.phases()) phases.push_back(ph);
-      plan_.profile = MotionProfile(state, phases);
-      return;
-    }
-  }
-  plan_stretch(state);
-}
-
-// A braking path (a < 0) with v < a^2 / 2j runs backward for a moment at
-// that jerk however it is planned. It gets there where a jerk share comes
-// to the front piece while the path brakes in it: a curvature step pushed
-// behind it (LookAhead::push_piece) halves the jerk the braking began with
-// (fuzz AJ: a feed hold or turn as the path set off, 2e-5 .. 1e-4 mm past
-// the stop and back, dist_prog_start falling while forward). The share is
-// for passing that step: the acceleration is unwound first at the front
-// piece's own jerk where that ends inside it.
-std::optional<Phase> PathInterpolator::unwinding(const MotionState& state, const Limits& lim) const {
-  if (!(state.a < 0) || 2 * state.v * lim.j >= state.a * state.a) return std::nullopt;
-  const PathSegment& front = look_ahead_.front().segment;
-  const double own = front.limits().j;
-  if (!(own > lim.j) || 2 * state.v * own < state.a * state.a) return std::nullopt;
-  const Phase ph = linear_ramp(state.a, 0, own);
-  if (!(advance(state, ph, ph.duration).p < front.length())) return std::nullopt;
-  return ph;
-}
-
-void PathInterpolator::plan_stretch(const MotionState& state) {
   // A transition that turned limiting while the path brakes through it (an
   // override change) may demand what the braking path cannot meet; then
   // the plan runs through it to the next limiting one, as it did before.
@@ -195,6 +162,7 @@ void PathInterpolator::plan_stretch(const MotionState& state) {
     if (longer.length <= st.length) break;  // nothing to run through
     st = longer;
   }
+  plan_.start_cycles = t0 / machine_.cycle_time_s();
 }
 
 void PathInterpolator::replan(double t) {

@@ -228,11 +228,6 @@ class PathInterpolator {
   // (path position within the block) at time t0.
   void begin_front(const MotionState& state, double t0);
   void plan(const MotionState& state, double t0);
-  // The plan's profile from `state` over the look-ahead's stretch.
-  void plan_stretch(const MotionState& state);
-  // The phase that unwinds a braking acceleration the stretch's jerk could
-  // not unwind without running backward (plan()); none where it can.
-  std::optional<Phase> unwinding(const MotionState& state, const Limits& lim) const;
   // Plans again where the path is at t: a stop was placed or released, or
   // the velocity factor changed.
   void replan(double t);

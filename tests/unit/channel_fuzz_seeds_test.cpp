@@ -239,12 +239,14 @@ TEST_CASE("KRN-3 a turn moves what is left of the block or spline span the path 
   check_seeds(fuzz::ProgramKind::hsc, {40510261, 40781308});
 }
 
-TEST_CASE("DPS-1 KRN-9 a curve where a spline meets a block is no longer than the block's part it replaces",
+TEST_CASE("DPS-1 KRN-9 a curve where a spline meets a block is no longer than the block's part it replaces, and "
+          "never on an arc",
           "[channel][hsc][fuzz]") {
   // AI (docs/FUZZ.md), fresh hsc seed 41000100: a lead-in under contour
   // mode DIST turned back by 162 degrees over DIST; dist_prog_start grew by
-  // 0.80 of the chord the axes moved.
-  check_seeds(fuzz::ProgramKind::hsc, {41000100});
+  // 0.80 of the chord the axes moved. 41002823: a lead-out on a G02 full
+  // circle, whose rest was the full circle again (one circle too far).
+  check_seeds(fuzz::ProgramKind::hsc, {41000100, 41002823});
 }
 
 TEST_CASE("DPS-3 KRN-2 a program refused from where the axes stood after a reset errs when the look-ahead's decoder "
