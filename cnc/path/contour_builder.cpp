@@ -40,17 +40,21 @@ double distance(const std::vector<double>& a, const std::vector<double>& b) {
 }
 double norm(const std::vector<double>& v) { return std::sqrt(dot(v, v)); }
 
-// Something to contour: a tangent break, or a curvature step (KRN-6,
-// thresholds as in the corner rule).
-bool needs_curve(const PathSegment& a, const PathSegment& b) {
-  const std::vector<double> t1 = a.tangent(a.length()), t2 = b.tangent(0);
+// Something to contour between two ends: a tangent break, or a curvature
+// step (KRN-6, thresholds as in the corner rule).
+bool tangent_break(const std::vector<double>& t1, const std::vector<double>& t2) {
   for (size_t i = 0; i < t1.size(); ++i)
     if (std::abs(t2[i] - t1[i]) > tolerance::direction) return true;
-  const std::vector<double> k1 = a.curvature(a.length()), k2 = b.curvature(0);
+  return false;
+}
+bool curvature_step(const std::vector<double>& k1, const std::vector<double>& k2) {
   const double kappa = std::max(norm(k1), norm(k2));
   for (size_t i = 0; i < k1.size(); ++i)
     if (std::abs(k2[i] - k1[i]) > tolerance::curvature_share * kappa) return true;
   return false;
+}
+bool needs_curve(const PathSegment& a, const PathSegment& b) {
+  return tangent_break(a.tangent(a.length()), b.tangent(0)) || curvature_step(a.curvature(a.length()), b.curvature(0));
 }
 
 // Largest distance of `curve` from the programmed path it replaces: the
@@ -85,6 +89,14 @@ double deviation_from(const ContourCurve& curve, const PathSegment& block) {
     worst = std::max(worst, distance(q, block.position(std::clamp(block.length_to(q), 0.0, block.length()))));
   }
   return worst;
+}
+
+// A one-sided curve replacing `d` of `block` fits it: never longer than
+// that d, whose distance it counts (DPS-1), in DIST mode too; within
+// `budget` of the block in contour mode DEV.
+bool fits_block(const ContourCurve& curve, const PathSegment& block, double d, const Corner& corner, double budget) {
+  return curve.length() <= d * longest_share &&
+         (corner.mode.type != ContourMode::Type::dev || deviation_from(curve, block) <= budget);
 }
 
 // Largest end curvature a curve of chord L may get later and stay within
@@ -238,8 +250,7 @@ ContourBuilder::CornerCurve ContourBuilder::corner_curve(const Open& a, const Pa
   };
   auto fit = [&](double budget, double d, double scale, Shape shape) {
     for (int attempt = 0; attempt < 60 && d >= shortest_mm; ++attempt) {
-      ContourCurve curve({a.full.position(len - d), a.full.tangent(len - d), a.full.curvature(len - d)},
-                         {b.position(d), b.tangent(d), b.curvature(d)}, scale, shape);
+      ContourCurve curve(a.full.curve_end(len - d), b.curve_end(d), scale, shape);
       if (curve.distance_to(programmed_corner) <= budget &&
           (!arcs || (deviation(curve, a.full, len - d, b, d) <= budget && curve.length() <= 2 * d * longest_share)))
         return Fit{d, std::move(curve)};
@@ -306,9 +317,7 @@ void ContourBuilder::emit_curve(std::vector<double> end_curvature, std::vector<P
   a.covered_used += covered;
   joint->lone_corner = p.lone;
   if (p.one_sided) {
-    joint->parts = {{a.piece.block, covered, a.full.programmed_velocity(), a.motion().path_caps, length}};
-    std::shared_ptr<const ContourJoint> shared = std::move(joint);
-    out.push_back({a.piece.block, PathSegment(shared, 0, length, false, machine_), a.piece.slope, false, true, false});
+    out.push_back(single_part(joint->curve, covered, true));
     pending_.reset();
     return;
   }
@@ -362,7 +371,7 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
       d_start = lead_in.d;
       PendingCurve p;
       p.start = entry->end;
-      p.end = {segment.position(d_start), segment.tangent(d_start), segment.curvature(d_start)};
+      p.end = segment.curve_end(d_start);
       p.corner = segment.position(0);
       p.from_index = piece.block;
       p.kappa_cap = kappa_cap(entry->corner, distance(p.start.point, p.end.point));
@@ -402,7 +411,7 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
     if (d > 0) {
       PendingCurve p;
       p.start = {start_point, start_t, start_k};
-      p.end = {segment.position(d), segment.tangent(d), segment.curvature(d)};
+      p.end = segment.curve_end(d);
       p.corner = a.full.end();
       p.from_index = a.piece.block;
       p.from_slope = a.piece.slope;
@@ -444,40 +453,34 @@ ContourBuilder::OneSidedCurve ContourBuilder::one_sided_curve(const ContourCurve
     return {};
   const double len = block.length(), at = lead_in ? 0 : len;
   if (!same_point(block.position(at), fixed.point)) return {};
-  const std::vector<double> t = block.tangent(at), k = block.curvature(at);
+  const std::vector<double> t = block.tangent(at);
   if (dot(fixed.tangent, t) < cos_sharpest) return {};
-  bool differs = false;  // as needs_curve
-  const double kappa = std::max(norm(k), norm(fixed.curvature));
-  for (size_t i = 0; i < t.size(); ++i)
-    differs = differs || std::abs(t[i] - fixed.tangent[i]) > tolerance::direction ||
-              std::abs(k[i] - fixed.curvature[i]) > tolerance::curvature_share * kappa;
-  if (!differs) return {};
+  if (!tangent_break(fixed.tangent, t) && !curvature_step(fixed.curvature, block.curvature(at))) return {};
   const bool dev = corner.mode.type == ContourMode::Type::dev;
   double d = dev ? d_max : std::min(d_max, corner.mode.dist);
   for (int attempt = 0; attempt < 60 && d >= shortest_mm; ++attempt) {
     const double s = lead_in ? d : len - d;
-    const ContourCurve::End on_block{block.position(s), block.tangent(s), block.curvature(s)};
+    const ContourCurve::End on_block = block.curve_end(s);
     auto curve = std::make_shared<const ContourCurve>(lead_in ? fixed : on_block, lead_in ? on_block : fixed);
-    // Never longer than the d of block it replaces, whose distance it
-    // counts (DPS-1), in DIST mode too: so only a turn of up to about 4
-    // degrees gets one (fuzz hsc seed 41000100: a lead-in turning 162
-    // degrees counted 0.80 of the path it ran).
-    if (curve->length() <= d * longest_share && (!dev || deviation_from(*curve, block) <= budget))
-      return {d, std::move(curve)};
+    // Only a turn of up to about 4 degrees is no longer than its d (fuzz
+    // hsc seed 41000100: a DIST lead-in turning 162 degrees counted 0.80 of
+    // the path it ran).
+    if (fits_block(*curve, block, d, corner, budget)) return {d, std::move(curve)};
     d *= 0.7;
   }
   return {};
 }
 
-PathPiece ContourBuilder::lead_out_piece(const std::shared_ptr<const ContourCurve>& curve) {
-  Open& a = *open_;
+PathPiece ContourBuilder::single_part(const std::shared_ptr<const ContourCurve>& curve, double covered,
+                                      bool begins_block) const {
+  const Open& a = *open_;
   auto joint = std::make_shared<ContourJoint>();
   joint->curve = curve;
   const double length = curve->length();
-  joint->parts = {{a.piece.block, a.full.covered_distance() - a.covered_used, a.full.programmed_velocity(),
-                   a.motion().path_caps, length}};
+  joint->parts = {{a.piece.block, covered, a.full.programmed_velocity(), a.motion().path_caps, length}};
   std::shared_ptr<const ContourJoint> shared = std::move(joint);
-  return {a.piece.block, PathSegment(shared, 0, length, false, machine_), a.piece.slope, false, false, true};
+  return {a.piece.block, PathSegment(shared, 0, length, false, machine_), a.piece.slope, false, begins_block,
+          !begins_block};
 }
 
 std::vector<PathPiece> ContourBuilder::flush_into(const ContourCurve::End& spline_start) {
@@ -499,18 +502,16 @@ std::vector<PathPiece> ContourBuilder::flush_into(const ContourCurve::End& splin
     const std::vector<double> k = line_bend(*pending_, a.full, spline_start.tangent, len / 2, pending_->kappa_cap);
     auto meeting = std::make_shared<const ContourCurve>(
         ContourCurve::End{a.full.position(a.d_start), a.full.tangent(a.d_start), k}, spline_start);
-    const bool dev = a.out().mode.type == ContourMode::Type::dev;
-    if (meeting->length() <= (len - a.d_start) * longest_share &&
-        (!dev || deviation_from(*meeting, a.full) <= a.out().mode.path_dev)) {
+    if (fits_block(*meeting, a.full, len - a.d_start, a.out(), a.out().mode.path_dev)) {
       emit_curve(k, out);
-      out.push_back(lead_out_piece(meeting));
+      out.push_back(single_part(meeting, a.full.covered_distance() - a.covered_used, false));
       open_.reset();
       return out;
     }
   }
   if (pending_) emit_curve(a.full.curvature(a.d_start), out);
   emit_middle(check.d, out);
-  out.push_back(lead_out_piece(check.curve));
+  out.push_back(single_part(check.curve, a.full.covered_distance() - a.covered_used, false));
   open_.reset();
   return out;
 }

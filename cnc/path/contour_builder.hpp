@@ -148,8 +148,9 @@ class ContourBuilder {
   // Within `budget` of the block (contour mode DEV).
   OneSidedCurve one_sided_curve(const ContourCurve::End& fixed, const PathSegment& block, const Motion& motion,
                                 const Corner& corner, bool lead_in, double d_max, double budget) const;
-  // `curve` as the open block's last piece, covering what is left of it.
-  PathPiece lead_out_piece(const std::shared_ptr<const ContourCurve>& curve);
+  // `curve` as the open block's only part on it: its first (a lead-in) or
+  // its last (a lead-out) piece, covering `covered` of it.
+  PathPiece single_part(const std::shared_ptr<const ContourCurve>& curve, double covered, bool begins_block) const;
 
   struct Entry {
     ContourCurve::End end;

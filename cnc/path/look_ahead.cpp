@@ -132,17 +132,11 @@ void LookAhead::plan_pushed(size_t before) {
   if (blocks_.size() > before) backward_pass(blocks_.size() - 1, before);
 }
 
-namespace {
-ContourCurve::End end_of(const PathSegment& segment, double s) {
-  return {segment.position(s), segment.tangent(s), segment.curvature(s)};
-}
-}  // namespace
-
 void LookAhead::add_to_builder(const MotionPiece& piece, PathSegment&& segment, bool stop_before) {
   ++programmed_;
   if (spline_exit_ && !blocks_.empty()) {
     const PathSegment& spline = blocks_.back().segment;
-    builder_.enter_from(end_of(spline, spline.length()), *spline_exit_);
+    builder_.enter_from(spline.curve_end(spline.length()), *spline_exit_);
   }
   spline_exit_.reset();
   if (!piece.out) {
@@ -166,7 +160,7 @@ void LookAhead::take(std::vector<HscOutput>&& items) {
     }
     SplinePiece& spline = std::get<SplinePiece>(item);
     PathPiece& part = spline.piece;
-    for (PathPiece& piece : part.stop_before ? builder_.flush() : builder_.flush_into(end_of(part.segment, 0)))
+    for (PathPiece& piece : part.stop_before ? builder_.flush() : builder_.flush_into(part.segment.curve_end(0)))
       push_piece(std::move(piece));
     part.stop_before = part.stop_before || builder_.take_exact_stop();
     push_spline_piece(std::move(part));

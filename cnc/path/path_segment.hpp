@@ -58,6 +58,8 @@ class PathSegment {
   // at every block transition.
   void tangent(double s, double* t) const;
   std::vector<double> curvature(double s) const;
+  // Position, tangent and curvature at s: a contouring curve's end there.
+  ContourCurve::End curve_end(double s) const { return {position(s), tangent(s), curvature(s)}; }
   // How far its tangent at either end may be off the one the programmer
   // meant, by the program's rounding (rad): its end points' rounding
   // across its length and, of an arc, an end radius off its start radius
