@@ -209,11 +209,10 @@ void PathInterpolator::restart_here(double t) {
 
 // Within the cycle's budget, and always while the piece the path runs on
 // has none after it (a contoured block waits for the next one, a spline for
-// its fit window): its jerk share is final only once the next piece is
-// there (a curvature step into a spline halves it). Planned alone, the path
-// braked to its end at -146 mm/s^2 with the whole share, and the halved one
-// that came then could not bring a to 0 before v (fuzz hsc seeds 32,
-// 40000192: the path ran backward).
+// its fit window): alone, it is planned at the jerk share a curvature step
+// after it would give it (LookAhead::push_piece), and the next piece gives
+// it its own back (fuzz AD, hsc seeds 32 and 40000192, and AJ: halved only
+// once the next piece came, the share took away jerk a braking used).
 bool PathInterpolator::may_fill() const {
   return !look_ahead_.full() && (fill_budget_ > 0 || look_ahead_.size() < 2);
 }

@@ -4,23 +4,17 @@
 #include <cmath>
 #include <limits>
 
+#include "axis_vector.hpp"
+#include "contour_fit.hpp"
 #include "motion_parts.hpp"
 #include "tolerances.hpp"
 
 namespace hil::cnc {
+using namespace contour_fit;
+
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
-// A corner sharper than this (a reversal) keeps its stop: the curve would
-// need a cusp.
-const double cos_sharpest = std::cos(170.0 * M_PI / 180.0);
-// Shorter corner distances are not worth a curve (and a shorter rest of
-// a block is no piece: an arc of it could not be told from a full circle).
-constexpr double shortest_mm = tolerance::no_length_mm;
-// Largest share of a block (of what is left of it) a one-sided curve takes
-// (ContourBuilder::enter_from, flush_into): the rest keeps a middle between
-// it and a curve at the block's other end.
-constexpr double one_sided_share = 0.4;
 // Share of a block between two curves that is absorbed into them.
 constexpr double absorbed_share = 1e-3;
 // Largest value of the quintic Hermite basis functions of the end second
@@ -28,75 +22,13 @@ constexpr double absorbed_share = 1e-3;
 // the curve by at most this * L² * dk.
 constexpr double curvature_basis_max = 0.01728;
 
-double dot(const std::vector<double>& a, const std::vector<double>& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
-  return sum;
-}
-double distance(const std::vector<double>& a, const std::vector<double>& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
-  return std::sqrt(sum);
-}
-double norm(const std::vector<double>& v) { return std::sqrt(dot(v, v)); }
-
-// Something to contour between two ends: a tangent break, or a curvature
-// step (KRN-6, thresholds as in the corner rule).
-bool tangent_break(const std::vector<double>& t1, const std::vector<double>& t2) {
-  for (size_t i = 0; i < t1.size(); ++i)
-    if (std::abs(t2[i] - t1[i]) > tolerance::direction) return true;
-  return false;
-}
-bool curvature_step(const std::vector<double>& k1, const std::vector<double>& k2) {
-  const double kappa = std::max(norm(k1), norm(k2));
-  for (size_t i = 0; i < k1.size(); ++i)
-    if (std::abs(k2[i] - k1[i]) > tolerance::curvature_share * kappa) return true;
-  return false;
-}
-bool needs_curve(const PathSegment& a, const PathSegment& b) {
-  return tangent_break(a.tangent(a.length()), b.tangent(0)) || curvature_step(a.curvature(a.length()), b.curvature(0));
-}
-
-// Largest distance of `curve` from the programmed path it replaces: the
-// end of `a` from s = a_from and the start of `b` up to s = b_to. Sampled;
-// a sample's distance is to the nearest point of either within that span
-// (where a projection falls outside, to the span's end: an upper bound).
-double deviation(const ContourCurve& curve, const PathSegment& a, double a_from, const PathSegment& b, double b_to) {
-  constexpr int samples = 32;
-  double worst = 0;
-  for (int k = 1; k < samples; ++k) {
-    const std::vector<double> q = curve.position(curve.length() * k / samples);
-    const double on_a = std::clamp(a.length_to(q), a_from, a.length());
-    const double on_b = std::clamp(b.length_to(q), 0.0, b_to);
-    worst = std::max(worst, std::min(distance(q, a.position(on_a)), distance(q, b.position(on_b))));
-  }
-  return worst;
-}
-
-// Next to a tight arc a curve may be longer than the path it replaces,
-// whose programmed distance it counts (DPS-1): dist_prog_start would grow
-// slower than the axes move (fuzz M and U: by up to 0.27 % at arcs of
-// r <= 0.3 mm). Such a curve shrinks until it is not, but for this share.
-constexpr double longest_share = 1 + 5e-4;
-
-// Largest distance of `curve` from `block` (sampled, to the nearest point
-// of the whole block).
-double deviation_from(const ContourCurve& curve, const PathSegment& block) {
-  constexpr int samples = 32;
-  double worst = 0;
-  for (int k = 1; k < samples; ++k) {
-    const std::vector<double> q = curve.position(curve.length() * k / samples);
-    worst = std::max(worst, distance(q, block.position(std::clamp(block.length_to(q), 0.0, block.length()))));
-  }
-  return worst;
-}
-
-// A one-sided curve replacing `d` of `block` fits it: never longer than
-// that d, whose distance it counts (DPS-1), in DIST mode too; within
-// `budget` of the block in contour mode DEV.
-bool fits_block(const ContourCurve& curve, const PathSegment& block, double d, const Corner& corner, double budget) {
-  return curve.length() <= d * longest_share &&
-         (corner.mode.type != ContourMode::Type::dev || deviation_from(curve, block) <= budget);
+// cos and sin of half the angle θ between two unit tangents.
+struct HalfAngle {
+  double c, s;
+};
+HalfAngle half_angle(const std::vector<double>& t1, const std::vector<double>& t2) {
+  const double cos_theta = std::clamp(dot(t1, t2), -1.0, 1.0);
+  return {std::sqrt((1 + cos_theta) / 2), std::sqrt((1 - cos_theta) / 2)};
 }
 
 // Largest end curvature a curve of chord L may get later and stay within
@@ -110,14 +42,13 @@ double kappa_cap(const Corner& corner, double chord) {
 
 double ContourBuilder::dev_distance(double deviation, const std::vector<double>& t1, const std::vector<double>& t2,
                                     double tangent_scale) {
-  const double cos_theta = std::clamp(dot(t1, t2), -1.0, 1.0);
-  const double c = std::sqrt((1 + cos_theta) / 2), s = std::sqrt((1 - cos_theta) / 2);
+  const auto [c, s] = half_angle(t1, t2);
   if (!(s > tolerance::direction)) return inf;
   return deviation * 16 / ((16 - 10 * tangent_scale * c) * s);
 }
 
 double ContourBuilder::turn_distance(double deviation, const std::vector<double>& t1, const std::vector<double>& t2) {
-  const double s = std::sqrt((1 - std::clamp(dot(t1, t2), -1.0, 1.0)) / 2);
+  const double s = half_angle(t1, t2).s;
   if (!(s > tolerance::direction)) return inf;
   return 3 * deviation / s;
 }
@@ -145,7 +76,7 @@ double corner_time_loss(double v, double length, const Limits& line) {
 
 // The tangent scale whose curve is the velocity blend of a turn: 1 / cos(θ/2).
 double turn_tangent_scale(const std::vector<double>& t1, const std::vector<double>& t2) {
-  return 1 / std::sqrt((1 + std::clamp(dot(t1, t2), -1.0, 1.0)) / 2);
+  return 1 / half_angle(t1, t2).c;
 }
 }  // namespace
 
@@ -435,84 +366,6 @@ std::vector<PathPiece> ContourBuilder::add(const MotionPiece& piece, PathSegment
   }
   open_ = Open{piece, std::move(segment), stop_before, d_start, 0.0};
   if (piece.out->transition != BlockTransition::contour) close(out);
-  return out;
-}
-
-ContourBuilder::OneSidedCurve ContourBuilder::one_sided_curve(const ContourCurve::End& fixed,
-                                                              const PathSegment& block, const Motion& motion,
-                                                              const Corner& corner, bool lead_in, double d_max,
-                                                              double budget) const {
-  // Not in a lift range: its caps hold per block, and Advanced Lifting
-  // times its landing by the programmed distance (corner_curve's lone
-  // curves alike).
-  // Not on an arc: its rest could be the full circle again (fuzz hsc seed
-  // 41002823: a G02 full circle's lead-out, dist_prog_start one circle
-  // too far at the end).
-  if (corner.transition != BlockTransition::contour || motion.in_lift_range || block.is_contour_curve() ||
-      block.is_arc())
-    return {};
-  const double len = block.length(), at = lead_in ? 0 : len;
-  if (!same_point(block.position(at), fixed.point)) return {};
-  const std::vector<double> t = block.tangent(at);
-  if (dot(fixed.tangent, t) < cos_sharpest) return {};
-  if (!tangent_break(fixed.tangent, t) && !curvature_step(fixed.curvature, block.curvature(at))) return {};
-  const bool dev = corner.mode.type == ContourMode::Type::dev;
-  double d = dev ? d_max : std::min(d_max, corner.mode.dist);
-  for (int attempt = 0; attempt < 60 && d >= shortest_mm; ++attempt) {
-    const double s = lead_in ? d : len - d;
-    const ContourCurve::End on_block = block.curve_end(s);
-    auto curve = std::make_shared<const ContourCurve>(lead_in ? fixed : on_block, lead_in ? on_block : fixed);
-    // Only a turn of up to about 4 degrees is no longer than its d (fuzz
-    // hsc seed 41000100: a DIST lead-in turning 162 degrees counted 0.80 of
-    // the path it ran).
-    if (fits_block(*curve, block, d, corner, budget)) return {d, std::move(curve)};
-    d *= 0.7;
-  }
-  return {};
-}
-
-PathPiece ContourBuilder::single_part(const std::shared_ptr<const ContourCurve>& curve, double covered,
-                                      bool begins_block) const {
-  const Open& a = *open_;
-  auto joint = std::make_shared<ContourJoint>();
-  joint->curve = curve;
-  const double length = curve->length();
-  joint->parts = {{a.piece.block, covered, a.full.programmed_velocity(), a.motion().path_caps, length}};
-  std::shared_ptr<const ContourJoint> shared = std::move(joint);
-  return {a.piece.block, PathSegment(shared, 0, length, false, machine_), a.piece.slope, false, begins_block,
-          !begins_block};
-}
-
-std::vector<PathPiece> ContourBuilder::flush_into(const ContourCurve::End& spline_start) {
-  std::vector<PathPiece> out;
-  if (!open_) return out;
-  Open& a = *open_;
-  const double len = a.full.length();
-  // Where a curve ends on the block, the lead-out takes all the rest and
-  // meets it with the polyline's bend (the spline's first turn counts as
-  // the corner after: over half the block); else, or where that leaves
-  // PATH_DEV, it takes at most one_sided_share of the block.
-  const OneSidedCurve check = one_sided_curve(spline_start, a.full, a.motion(), a.out(), false,
-                                              one_sided_share * (len - a.d_start), a.out().mode.path_dev);
-  if (!check.curve) {
-    close(out);
-    return out;
-  }
-  if (pending_ && a.d_start > 0) {
-    const std::vector<double> k = line_bend(*pending_, a.full, spline_start.tangent, len / 2, pending_->kappa_cap);
-    auto meeting = std::make_shared<const ContourCurve>(
-        ContourCurve::End{a.full.position(a.d_start), a.full.tangent(a.d_start), k}, spline_start);
-    if (fits_block(*meeting, a.full, len - a.d_start, a.out(), a.out().mode.path_dev)) {
-      emit_curve(k, out);
-      out.push_back(single_part(meeting, a.full.covered_distance() - a.covered_used, false));
-      open_.reset();
-      return out;
-    }
-  }
-  if (pending_) emit_curve(a.full.curvature(a.d_start), out);
-  emit_middle(check.d, out);
-  out.push_back(single_part(check.curve, a.full.covered_distance() - a.covered_used, false));
-  open_.reset();
   return out;
 }
 

@@ -1,4 +1,5 @@
 #include "contour_curve.hpp"
+#include "axis_vector.hpp"
 #include "tolerances.hpp"
 
 #include <algorithm>
@@ -6,12 +7,6 @@
 
 namespace hil::cnc {
 namespace {
-
-double dot(const std::vector<double>& a, const std::vector<double>& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
-  return sum;
-}
 
 // 5-point Gauss-Legendre on [-1, 1].
 constexpr double gl_x[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "axis_vector.hpp"
 #include "bisect.hpp"
 #include "tolerances.hpp"
 
@@ -23,12 +24,6 @@ constexpr double curvature_round_off = tolerance::curvature_share;
 // engraving program met at 1.2e-12 rad, just above tolerance::direction,
 // and were passed as kinks at 1.3 mm/s.
 constexpr double negligible_kink_share = 1e-7;
-
-double norm(const std::vector<double>& v) {
-  double sum = 0;
-  for (double x : v) sum += x * x;
-  return std::sqrt(sum);
-}
 }  // namespace
 
 double curvature_step_velocity(const AxisStep& step, double kappa, const AxisConfig& axis, double cycle_s,

@@ -7,6 +7,7 @@
 #include <memory>
 #include <utility>
 
+#include "axis_vector.hpp"
 #include "tolerances.hpp"
 
 namespace hil::cnc {
@@ -20,12 +21,6 @@ constexpr int samples_per_block = 8;
 constexpr double longest_share = 1.02;
 // Points behind the last span kept for the fits, beyond what they need.
 constexpr size_t drop_batch = 64;
-
-double dot(const std::vector<double>& a, const std::vector<double>& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
-  return sum;
-}
 
 // The bend from line a into line b (rad).
 double bend(const PathSegment& a, const PathSegment& b) {

@@ -127,9 +127,12 @@ void LookAhead::push(const MotionPiece& piece, bool stop_before) {
 // and middle, a spline's span): the backward pass walks the braking ramp
 // behind them, some 85 pieces on a G261 chord polyline, and walked it for
 // each piece (issue 36 item 3). It ends, as it did after the last of them,
-// at the first limiting transition before them that keeps its v_end.
+// at the first limiting transition before them that keeps its v_end, and
+// not before the piece they came after: its jerk share may have risen
+// (push_piece), which changes the pieces before it even where its own
+// v_end stays (a stop after it).
 void LookAhead::plan_pushed(size_t before) {
-  if (blocks_.size() > before) backward_pass(blocks_.size() - 1, before);
+  if (blocks_.size() > before) backward_pass(blocks_.size() - 1, before > 0 ? before - 1 : 0);
 }
 
 void LookAhead::add_to_builder(const MotionPiece& piece, PathSegment&& segment, bool stop_before) {
@@ -140,7 +143,7 @@ void LookAhead::add_to_builder(const MotionPiece& piece, PathSegment&& segment, 
   }
   spline_exit_.reset();
   if (!piece.out) {
-    flush();
+    flush_pending();
     push_piece({piece.block, std::move(segment), piece.slope, stop_before, true, true});
     return;
   }
@@ -185,11 +188,21 @@ void LookAhead::push_spline_piece(PathPiece&& piece) {
 
 void LookAhead::flush_spline() { take(hsc_.flush()); }
 
-void LookAhead::flush() {
-  const size_t before = blocks_.size();
+void LookAhead::flush_pending() {
   flush_spline();
   for (PathPiece& piece : builder_.flush()) push_piece(std::move(piece));
-  plan_pushed(before);
+}
+
+void LookAhead::flush() {
+  const size_t before = blocks_.size();
+  flush_pending();
+  if (blocks_.empty() || motion_ends_) return;
+  // Known now: no curvature step after the last piece. A piece pushed after
+  // all is entered from a stop, as planned.
+  motion_ends_ = true;
+  const size_t last = blocks_.size() - 1;
+  if (!blocks_[last].after_curvature_step) blocks_[last].jerk_share = 1;
+  backward_pass(last, std::min(before, last));
 }
 
 void LookAhead::pop_front() {
@@ -199,32 +212,39 @@ void LookAhead::pop_front() {
 
 void LookAhead::clear() {
   spline_exit_.reset();
+  motion_ends_ = false;
   blocks_.clear();
   builder_.clear();
   hsc_.clear();
   programmed_ = 0;
 }
 
+// The last piece is planned at the share a curvature step into what
+// follows would give it, until that is known: a later push only raises it.
+// Halved only once the next piece came, it took away jerk a braking in it
+// already used: from a < 0, v < a^2 / j, every plan at the halved jerk ran
+// the velocity below 0 (fuzz AJ: the path 1e-4 mm past its stop and back;
+// contour seed 13009555: an arc entered at the velocity from which it could
+// stop for a dwell at full jerk, not at half).
 void LookAhead::push_piece(PathPiece&& piece) {
   spline_exit_.reset();
-  double jerk_share = 1;
+  bool after_step = false;
   if (!blocks_.empty()) {
-    const Junction j = junction(blocks_.back().segment, piece.segment, machine_);
-    blocks_.back().junction_limit = piece.stop_before ? 0.0 : j.v_max;
-    // The path stands at a stop there: no curvature step to pass, and the
-    // block before keeps its jerk. Halved only now, it undid the plan the
-    // path already braked by: an arc before a dwell, entered at the speed
-    // from which it could stop at full jerk, could not at half (fuzz contour
-    // seed 13009555: the dwell passed at 15.5 mm/s, X 82,623 mm/s^3).
-    // Nor where the corner rule lets none pass (a kink between blocks too
-    // short to space it, kink_spacing_velocity): fuzz contour seed
-    // 23002858, a 1.35 um block's curve halves planned at full jerk, then
-    // halved by a 21 nm rest after them.
-    const bool step = j.curvature_step && !piece.stop_before && j.v_max > 0;
-    if (step) blocks_.back().jerk_share = jerk_share = curvature_step_jerk_share;
-    blocks_.back().curvature_step = step;
+    LookAheadPiece& back = blocks_.back();
+    const Junction j = junction(back.segment, piece.segment, machine_);
+    if (motion_ends_) piece.stop_before = true;
+    back.junction_limit = piece.stop_before ? 0.0 : j.v_max;
+    // The path stands at a stop there: no curvature step to pass. Nor where
+    // the corner rule lets none pass (a kink between blocks too short to
+    // space it, kink_spacing_velocity): fuzz contour seed 23002858, a 1.35 um
+    // block's curve halves planned at full jerk, then halved by a 21 nm rest
+    // after them.
+    after_step = j.curvature_step && !piece.stop_before && j.v_max > 0;
+    back.curvature_step = after_step;
+    back.jerk_share = after_step || back.after_curvature_step ? curvature_step_jerk_share : 1.0;
   }
-  blocks_.emplace_back(std::move(piece), jerk_share);
+  motion_ends_ = false;
+  blocks_.emplace_back(std::move(piece)).after_curvature_step = after_step;
 }
 
 void LookAhead::set_velocity_factor(double factor) {

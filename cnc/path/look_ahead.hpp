@@ -7,6 +7,7 @@
 #include <cstddef>
 
 #include "contour_builder.hpp"
+#include "corner_rule.hpp"
 #include "hsc_spline.hpp"
 #include "machine_config.hpp"
 #include "path_segment.hpp"
@@ -20,11 +21,14 @@ namespace hil::cnc {
 // KRN-6), and what the look-ahead found for it.
 struct LookAheadPiece : PathPiece {
   // Made in its place in the look-ahead: a PathSegment is large to move.
-  LookAheadPiece(PathPiece&& piece, double share) : PathPiece(std::move(piece)), jerk_share(share) {}
+  explicit LookAheadPiece(PathPiece&& piece) : PathPiece(std::move(piece)) {}
 
   double junction_limit = 0;  // corner rule into the next block; 0 while none follows
-  double jerk_share = 1;      // of its path jerk limit; less next to a curvature step
+  // Of its path jerk limit: less next to a curvature step, and as the last
+  // piece (a step into what follows may come).
+  double jerk_share = curvature_step_jerk_share;
   bool curvature_step = false;  // into the next block (or a near-tangent kink): crossed with a = 0
+  bool after_curvature_step = false;  // from the block before
   // Highest velocity at its end: the corner rule and the programmed
   // velocities on both sides, and what the stretches after it allow.
   double v_end = 0;
@@ -69,7 +73,10 @@ class LookAhead {
   // must stand still where it starts (an M function synchronised before
   // its motion, a dwell).
   void push(const MotionPiece& piece, bool stop_before = false);
-  // Nothing follows (yet): a block waiting for its successor ends as programmed.
+  // Nothing follows (the program's end, a stop placed, a block that cannot
+  // be moved): a block waiting for its successor ends as programmed, and
+  // the last piece keeps its full jerk (nothing after it makes a
+  // curvature step); a piece pushed after all is entered from a stop.
   void flush();
   void pop_front();
   void clear();
@@ -107,6 +114,7 @@ class LookAhead {
   void add_to_builder(const MotionPiece& piece, PathSegment&& segment, bool stop_before);
   void take(std::vector<HscOutput>&& items);  // what the spline hands on
   void flush_spline();
+  void flush_pending();  // the builder's and the spline's blocks, without planning
 
   const MachineConfig& machine_;
   ContourBuilder builder_;
@@ -114,6 +122,7 @@ class LookAhead {
   // How the path leaves the block of the spline piece pushed last, while
   // nothing was pushed after it (the builder's curve into the next block).
   std::optional<Corner> spline_exit_;
+  bool motion_ends_ = false;  // flush() said nothing follows the last piece
   size_t programmed_ = 0;  // blocks pushed and not yet popped (the last piece of each)
   size_t capacity_;
   double factor_ = 1;

@@ -7,7 +7,9 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <fstream>
 #include <initializer_list>
+#include <string>
 
 #include "channel_fuzz.hpp"
 
@@ -259,4 +261,50 @@ TEST_CASE("DPS-3 KRN-2 a program refused from where the axes stood after a reset
   // cycles after the start, when the oracle no longer expected it. An
   // oracle fault, not the channel's.
   check_seeds(fuzz::ProgramKind::contour, {40301643});
+}
+
+namespace {
+
+// A corpus program (tests/programs/NAME.nc) as cam_programs' `hsc+g261`
+// way runs it: G261 and #HSC ON [BSPLINE MERGE=1] within 0.01 mm, after its
+// first G90 line.
+std::string with_hsc_and_g261(const std::string& name) {
+  std::ifstream in(std::string(HIL_SOURCE_DIR) + "/tests/programs/" + name + ".nc");
+  std::string text, line;
+  bool done = false;
+  while (std::getline(in, line)) {
+    text += line + "\n";
+    const size_t g90 = line.find("G90");
+    if (!done && g90 != std::string::npos && line.find(';') > g90) {
+      text += "#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\n#HSC ON [BSPLINE PATH_DEV=0.01 MERGE=1]\n";
+      done = true;
+    }
+  }
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("KRN-3 KRN-5 DPS-1 a braking never runs the path backward when a jerk share comes to the piece it brakes in",
+          "[channel][hsc][fuzz]") {
+  // AJ (docs/FUZZ.md), fresh seeds on corpus programs under G261 and HSC:
+  // the path set off or braked in a piece and a feed hold, a turn or a lower
+  // override came; then the piece pushed behind it made a curvature step,
+  // halving the jerk the braking began with. The path ran 2e-5 .. 1e-4 mm
+  // past its stop and back, dist_prog_start falling while forward. The last
+  // piece is now planned at the step's share until what follows is known.
+  for (uint64_t seed : {41200025u, 41200055u, 41200056u}) {
+    fuzz::FuzzOptions options;
+    options.program_text = with_hsc_and_g261("surfacing_3d");
+    const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(seed, options);
+    for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+    CHECK(run.passed());
+  }
+  for (uint64_t seed : {41200063u, 41810009u}) {
+    fuzz::FuzzOptions options;
+    options.program_text = with_hsc_and_g261("public/jscut_jsdc");
+    const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(seed, options);
+    for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+    CHECK(run.passed());
+  }
 }

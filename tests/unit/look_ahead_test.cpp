@@ -233,15 +233,17 @@ TEST_CASE("KRN-3 look-ahead: holds FCT_LOOK_AHEAD_STANDARD = 120 blocks and can 
   }
   REQUIRE(LookAhead::fct_look_ahead_standard == 120);
   CHECK(standard.size() == 120);
-  // Straight on, the look-ahead plans one stretch over the whole window,
-  // so that it can always stop at the end of what it knows.
+  // Straight on, the look-ahead plans over the whole window, so that it can
+  // always stop at the end of what it knows: one stretch up to the last
+  // piece (entered with a = 0: a curvature step after it may yet come and
+  // give it half its jerk), then the stop within that piece.
   const Stretch st = standard.stretch(0);
-  CHECK(st.length == Approx(1.2));
-  CHECK(st.v_end == 0);
+  CHECK(st.length == Approx(1.19));
   const MotionProfile from_rest = block_profile({}, st.length, st.v_end, st.lim, SlopeType::trapez).profile;
-  CHECK(from_rest.end().p == Approx(1.2).epsilon(1e-12));
-  CHECK(from_rest.end().v == 0);
-  CHECK(longer.stretch(0).length == Approx(4.0));  // a longer window plans further ahead
+  CHECK(from_rest.end().p == Approx(1.19).epsilon(1e-12));
+  CHECK(from_rest.end().v == Approx(st.v_end));
+  CHECK(velocity_change_end({0, st.v_end, 0, 0}, 0, standard.cruise_limits(119), SlopeType::trapez).p <= 0.01);
+  CHECK(longer.stretch(0).length == Approx(3.99));  // a longer window plans further ahead
   const double v_window = extremes(from_rest).max_v;
   CHECK(v_window < extremes(block_profile({}, 4.0, 0, st.lim, SlopeType::trapez).profile).max_v);
   // And the channel never plans beyond its window: limits hold.
@@ -255,7 +257,8 @@ TEST_CASE("KRN-3 KRN-6 issue 36: the backward pass once per pushed block leaves 
           "[look_ahead]") {
   // A G261 block brings its curve halves and middle at once: the look-ahead
   // plans them in one pass (plan_pushed), which ends before them at the
-  // first limiting transition that keeps its v_end. An override change
+  // first limiting transition that keeps its v_end (not before the piece
+  // they follow, whose jerk share may have risen). An override change
   // re-runs the pass over everything: the two must agree to the bit.
   const MachineConfig m = test::xyz_machine();
   std::ostringstream nc;
@@ -266,9 +269,11 @@ TEST_CASE("KRN-3 KRN-6 issue 36: the backward pass once per pushed block leaves 
   }
   const auto pieces = pieces_of(nc.str(), m);
   LookAhead pushed(m), whole(m);
-  for (const MotionPiece& piece : pieces) {
-    pushed.push(piece);
-    whole.push(piece);
+  // Stops among them: a stop's v_end stays as the piece before it gets its
+  // full jerk back (push_piece), and the pass must go on past it.
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    pushed.push(pieces[i], i % 25 == 0);
+    whole.push(pieces[i], i % 25 == 0);
   }
   whole.set_velocity_factor(0.5);
   whole.set_velocity_factor(1.0);
@@ -283,6 +288,43 @@ TEST_CASE("KRN-3 KRN-6 issue 36: the backward pass once per pushed block leaves 
     whole.pop_front();
   }
   CHECK(limiting > 100);
+}
+
+TEST_CASE("KRN-3 look-ahead: the last piece has a curvature step's jerk share until what follows is known",
+          "[look_ahead]") {
+  // Fuzz AJ (docs/FUZZ.md): halved only when the next piece came, the share
+  // took away jerk a braking in the piece already used, and from a < 0 every
+  // plan ran the velocity below 0. A later push or the end only raises it.
+  const MachineConfig m = test::xyz_machine();
+  const auto pieces = pieces_of("G01 X10 F3000\nX20\nG02 X25 Y-5 J-5\nG01 Y-15\n", m);
+  REQUIRE(pieces.size() == 4);
+  const double full = m.axes[0].j_max;
+  LookAhead la(m);
+  la.push(pieces[0]);
+  CHECK(la.cruise_limits(0).j == Approx(curvature_step_jerk_share * full));
+  la.push(pieces[1]);  // collinear: the first gets its full jerk back
+  CHECK(la.cruise_limits(0).j == Approx(full));
+  CHECK(la.cruise_limits(1).j == Approx(curvature_step_jerk_share * full));
+  la.push(pieces[2]);  // line into a tangent arc: a step, shares stay
+  CHECK(la.cruise_limits(1).j == Approx(curvature_step_jerk_share * full));
+  la.flush();  // nothing follows; the step before the arc keeps its share
+  const double arc_j = curvature_step_jerk_share * pieces[2].segment(m).limits().j;
+  CHECK(la.cruise_limits(2).j == Approx(arc_j));
+  la.push(pieces[3]);  // after all: entered from a stop, no step
+  CHECK(la.cruise_limits(2).j == Approx(arc_j));
+  CHECK(la.cruise_limits(3).j == Approx(curvature_step_jerk_share * full));
+  la.pop_front();
+  la.pop_front();
+  CHECK(la.front().junction_limit == 0);
+  CHECK_FALSE(la.front().curvature_step);
+
+  LookAhead line(m);
+  line.push(pieces[0]);
+  line.flush();
+  CHECK(line.cruise_limits(0).j == Approx(full));
+  line.push(pieces[1]);
+  CHECK(line.cruise_limits(0).j == Approx(full));
+  CHECK(line.front().junction_limit == 0);
 }
 
 TEST_CASE("KRN-3 look-ahead: random programs of lines, tangent arcs and helices keep every axis' limits",
