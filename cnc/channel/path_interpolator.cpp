@@ -96,11 +96,13 @@ bool PathInterpolator::turn(double t, size_t stored_blocks) {
   }
   const StopPoint stop = leave_front(t);
   const size_t k = stop.block;
-  // Where on a full circle k (its start is its end) the path stands: a
-  // part of block k runs from a lower place on it to a higher one forward,
-  // the other way backward, whether it ends where k ends or at a split.
-  const bool at_part_start = stop.s < stop.front_length / 2;
-  const bool at_end_of_k = !program_.backward() != at_part_start;
+  // Where on a full circle k (its start is its end) the path stands: its
+  // place in k's programmed distance says which end. (Told from where it
+  // stood in the front piece, a backward rest of 2.4e-14 mm at k's start
+  // was taken for k's end, and the turn skipped the circle: fuzz arcs seed
+  // 42301617 on another machine, dist_prog_start 54 mm short at the end.)
+  const bool at_end_of_k =
+      stop.programmed_place > PathSegment(program_[k].motion, machine_).covered_distance() / 2;
   program_.turn(stored_blocks);
   const bool backward = program_.backward();
   // What is left of block k the new way: back to its start, or on to its end

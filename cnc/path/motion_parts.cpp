@@ -5,17 +5,12 @@
 #include <limits>
 #include <utility>
 
+#include "axis_vector.hpp"
 #include "path_segment.hpp"
 #include "tolerances.hpp"
 
 namespace hil::cnc {
 namespace {
-
-double distance(const std::vector<double>& a, const std::vector<double>& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
-  return std::sqrt(sum);
-}
 
 constexpr double on_motion_mm = tolerance::no_length_mm;
 using tolerance::shortest_part_mm;

@@ -263,6 +263,17 @@ TEST_CASE("DPS-3 KRN-2 a program refused from where the axes stood after a reset
   check_seeds(fuzz::ProgramKind::contour, {40301643});
 }
 
+TEST_CASE("KRN-5 DPS-1 a turn at a full circle's start on a tiny rest of it runs the whole circle",
+          "[channel][fuzz]") {
+  // AK (docs/FUZZ.md): backward along a G03 full circle (its start is its
+  // end), the path stood on a 2.4e-14 mm rest of it at its start when the
+  // PLC turned it forward. Which end of the circle it stood at was told by
+  // where it stood in that rest, not in the block: taken for the circle's
+  // end, the turn skipped the circle (dist_prog_start 319.06 mm at the end
+  // for a program of 373.42).
+  check_seeds(fuzz::ProgramKind::arcs, {42301617}, true);
+}
+
 namespace {
 
 // A corpus program (tests/programs/NAME.nc) as cam_programs' `hsc+g261`
