@@ -81,8 +81,13 @@ class Lift {
   void land_at_once();
   void apply_parked(std::vector<AxisSetpoint>& setpoints);
   void position_to(double target);
+  // The difference first, constant within a block: summed with the
+  // program's whole covered distance, the front's part lost its round-off
+  // (5e-14 mm), which a lift rising fast over a crawling path multiplies by
+  // dz/dq: Z's acceleration 1.2e-6 above a_max (fuzz AL, lift seeds
+  // 43300505 and 43303849 on other machines).
   double since_start_covered(const PathInterpolator& path) const {
-    return covered_ + path.front_covered() - covered_at_start_;
+    return (covered_ - covered_at_start_) + path.front_covered();
   }
 
   const MachineConfig& machine_;

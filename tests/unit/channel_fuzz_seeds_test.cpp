@@ -274,6 +274,17 @@ TEST_CASE("KRN-5 DPS-1 a turn at a full circle's start on a tiny rest of it runs
   check_seeds(fuzz::ProgramKind::arcs, {42301617}, true);
 }
 
+TEST_CASE("LIFT-2 RIG-3 a lift rising fast over a crawling path keeps a_max: its path parameter is not lost "
+          "in the program's covered distance",
+          "[channel][lift][fuzz]") {
+  // AL (docs/FUZZ.md): Advanced Lifting over 1.6 um blocks, the path at
+  // 3.9 um/s and Z at a_max along its profile. The path parameter was the
+  // program's covered distance so far plus the front's part, less the
+  // range's start: 5e-14 mm of round-off, which dz/dq (some 8,000) made
+  // 1.2e-6 of a_max in Z's sampled acceleration.
+  check_seeds(fuzz::ProgramKind::lift, {43300505, 43303849}, true);
+}
+
 namespace {
 
 // A corpus program (tests/programs/NAME.nc) as cam_programs' `hsc+g261`
