@@ -28,7 +28,7 @@ struct LookAheadPiece : PathPiece {
   // piece (a step into what follows may come).
   double jerk_share = curvature_step_jerk_share;
   bool curvature_step = false;  // into the next block (or a near-tangent kink): crossed with a = 0
-  bool after_curvature_step = false;  // from the block before
+  bool after_curvature_step = false;  // from the piece before
   // Highest velocity at its end: the corner rule and the programmed
   // velocities on both sides, and what the stretches after it allow.
   double v_end = 0;
@@ -75,8 +75,8 @@ class LookAhead {
   void push(const MotionPiece& piece, bool stop_before = false);
   // Nothing follows (the program's end, a stop placed, a block that cannot
   // be moved): a block waiting for its successor ends as programmed, and
-  // the last piece keeps its full jerk (nothing after it makes a
-  // curvature step); a piece pushed after all is entered from a stop.
+  // the last piece gets its full jerk share back (no curvature step after
+  // it); a piece pushed after all is entered from a stop.
   void flush();
   void pop_front();
   void clear();
