@@ -80,20 +80,21 @@ std::vector<PathPiece> ContourBuilder::flush_into(const ContourCurve::End& splin
     close(out);
     return out;
   }
+  std::shared_ptr<const ContourCurve> lead_out = check.curve;
   if (pending_ && a.d_start > 0) {
     const std::vector<double> k = line_bend(*pending_, a.full, spline_start.tangent, len / 2, pending_->kappa_cap);
     auto meeting = std::make_shared<const ContourCurve>(
         ContourCurve::End{a.full.position(a.d_start), a.full.tangent(a.d_start), k}, spline_start);
     if (fits_block(*meeting, a.full, len - a.d_start, a.out(), a.out().mode.path_dev)) {
       emit_curve(k, out);
-      out.push_back(single_part(meeting, a.full.covered_distance() - a.covered_used, false));
-      open_.reset();
-      return out;
+      lead_out = std::move(meeting);
     }
   }
-  if (pending_) emit_curve(a.full.curvature(a.d_start), out);
-  emit_middle(check.d, out);
-  out.push_back(single_part(check.curve, a.full.covered_distance() - a.covered_used, false));
+  if (lead_out == check.curve) {
+    if (pending_) emit_curve(a.full.curvature(a.d_start), out);
+    emit_middle(check.d, out);
+  }
+  out.push_back(single_part(lead_out, a.full.covered_distance() - a.covered_used, false));
   open_.reset();
   return out;
 }

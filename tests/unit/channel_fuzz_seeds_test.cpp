@@ -305,6 +305,17 @@ std::string with_hsc_and_g261(const std::string& name) {
   return text;
 }
 
+// Runs `program` with each seed's PLC, as `channel_fuzz --program` does.
+void check_program_seeds(const std::string& program, std::initializer_list<uint64_t> seeds) {
+  fuzz::FuzzOptions options;
+  options.program_text = program;
+  for (uint64_t seed : seeds) {
+    const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(seed, options);
+    for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
+    CHECK(run.passed());
+  }
+}
+
 }  // namespace
 
 TEST_CASE("KRN-3 KRN-5 DPS-1 a braking never runs the path backward when a jerk share comes to the piece it brakes in",
@@ -315,18 +326,6 @@ TEST_CASE("KRN-3 KRN-5 DPS-1 a braking never runs the path backward when a jerk 
   // halving the jerk the braking began with. The path ran 2e-5 .. 1e-4 mm
   // past its stop and back, dist_prog_start falling while forward. The last
   // piece is now planned at the step's share until what follows is known.
-  for (uint64_t seed : {41200025u, 41200055u, 41200056u}) {
-    fuzz::FuzzOptions options;
-    options.program_text = with_hsc_and_g261("surfacing_3d");
-    const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(seed, options);
-    for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
-    CHECK(run.passed());
-  }
-  for (uint64_t seed : {41200063u, 41810009u}) {
-    fuzz::FuzzOptions options;
-    options.program_text = with_hsc_and_g261("public/jscut_jsdc");
-    const fuzz::FuzzRun run = fuzz::run_channel_fuzz_isolated(seed, options);
-    for (const fuzz::Failure& f : run.failures) FAIL_CHECK(fuzz::describe(run, f));
-    CHECK(run.passed());
-  }
+  check_program_seeds(with_hsc_and_g261("surfacing_3d"), {41200025, 41200055, 41200056});
+  check_program_seeds(with_hsc_and_g261("public/jscut_jsdc"), {41200063, 41810009});
 }
